@@ -1,0 +1,2 @@
+add_library(soma_warnings INTERFACE)
+target_compile_options(soma_warnings INTERFACE -Wall -Wextra -Wno-psabi)

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Install soma's build and run dependencies on Debian 12 (run as root; idempotent).
+set -euo pipefail
+packages=(
+  build-essential cmake ninja-build ccache pkg-config git
+  libeigen3-dev libmpfr-dev libgmp-dev libmpfrc++-dev
+  libfmt-dev nlohmann-json3-dev libcli11-dev libpng-dev libtbb-dev
+  libosmesa6-dev libfreetype-dev fonts-dejavu-core
+  catch2 libbenchmark-dev liborocos-kdl-dev
+  libcgal-dev libceres-dev libnlopt-cxx-dev libompl-dev libboost-filesystem-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "bootstrap: all ${#packages[@]} packages already installed"
+  exit 0
+fi
+if [ "$(id -u)" -ne 0 ]; then
+  echo "bootstrap: missing packages (${missing[*]}); run this script as root" >&2
+  exit 1
+fi
+echo "bootstrap: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}"
