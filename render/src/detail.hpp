@@ -1,0 +1,33 @@
+#pragma once
+// Internal helpers shared by the render sources (not installed, not public API).
+#include "soma/render/scene.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace soma::render::detail {
+
+inline bool finite(const Eigen::Vector3d& p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
+
+inline std::string str(const Eigen::Vector3d& p) {
+  std::ostringstream s;
+  s << '(' << p.x() << ", " << p.y() << ", " << p.z() << ')';
+  return s.str();
+}
+
+[[noreturn]] inline void invalid(const std::string& what) {
+  throw std::invalid_argument("soma::render: " + what);
+}
+
+/// Sizes after resolving "0 = automatic" against the scene's characteristic length L.
+inline double pointRadius(const Points& x, double L) { return x.radius > 0 ? x.radius : autosize::pointRadius * L; }
+inline double tubeRadius(const Tube& x, double L) { return x.radius > 0 ? x.radius : autosize::tubeRadius * L; }
+inline double arrowRadius(const Arrow& x, double L) { return x.radius > 0 ? x.radius : autosize::arrowRadius * L; }
+inline double frameScale(const Frame& x, double L) { return x.scale > 0 ? x.scale : autosize::frameScale * L; }
+inline double axesLength(const Scene& s, double L) { return s.axesLength > 0 ? s.axesLength : autosize::axesLength * L; }
+/// Shaft radius of a frame's arrows relative to its scale.
+inline constexpr double frameArrowRadius = 0.035;
+
+}  // namespace soma::render::detail

@@ -1,0 +1,82 @@
+#pragma once
+// The three renderings of study results (DESIGN §4, §6): an aligned text table for the terminal
+// (`soma study run`), report.json and a self-contained index.html (`soma report`).
+#include "soma/studies/runner.hpp"
+#include "soma/studies/study.hpp"
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace soma::studies {
+
+/// soma's version ("0.1.0"); from the SOMA_VERSION compile definition when given.
+std::string_view somaVersion();
+
+/// What the report says about the run itself.
+struct ReportInfo {
+  std::string version;   ///< soma version
+  std::string scalar;    ///< requested scalar name ("double", "mpfr")
+  int mpfrBits = 0;      ///< precision when scalar is mpfr, else 0
+  std::string date;      ///< local time, ISO 8601 ("2025-03-01T14:05:09+0100")
+  std::string machine;   ///< "hostname — Linux 6.1 x86_64 — CPU model (N threads)"
+  std::string compiler;  ///< "GCC 12.2.0", build type
+  std::string gitCommit; ///< `git describe --always --dirty` of the source tree, or "" if unknown
+  std::string command;   ///< the command line that produced the report
+  double seconds = 0;    ///< wall time of the whole run
+  bool figures = true;   ///< figures were requested
+};
+
+/// Fill version, date, machine, compiler and git commit for the current process.
+ReportInfo collectReportInfo(ScalarKind scalar, std::string command, double seconds,
+                             bool figures);
+
+/// Escape &, <, >, " and ' for HTML text and attribute values; invalid UTF-8 becomes U+FFFD.
+std::string htmlEscape(std::string_view text);
+
+/// One study result as a JSON object (the element of report.json's "studies"), indented text.
+std::string studyJson(const StudyResult& r, int indent = 2);
+/// report.json: {soma_version, scalar, mpfr_bits, date, machine, compiler, git_commit, command,
+/// seconds, summary:{studies, studies_passed, studies_failed, checks, checks_passed,
+/// checks_failed}, studies:[{id,title,source,chapter,passed,seconds,scalar,error,
+/// checks:[{name,expected,got,error,tolerance,seconds,passed}], figures:[{file,caption}],notes}]}.
+/// A non-finite error/tolerance is written as null.
+std::string reportJson(const ReportInfo& info, const std::vector<StudyResult>& results);
+
+/// index.html: one self-contained page (inline CSS, no script). `reportDir` is used only to
+/// mark figures whose file is missing.
+std::string reportHtml(const ReportInfo& info, const std::vector<StudyResult>& results,
+                       const std::filesystem::path& reportDir = {});
+
+/// Write dir/index.html and dir/report.json (creating dir). Throws std::runtime_error naming the
+/// path on an I/O failure.
+void writeReport(const std::filesystem::path& dir, const ReportInfo& info,
+                 const std::vector<StudyResult>& results);
+
+struct TextOptions {
+  std::filesystem::path outDir;    ///< figure paths are printed relative to this directory
+  std::size_t valueWidth = 26;     ///< wider expected/got values are shown in full below the row
+  std::size_t nameWidth = 60;      ///< a longer check name gets its own line above the row
+  bool color = false;              ///< ANSI colours for PASS/FAIL (a terminal, NO_COLOR unset)
+};
+/// The terminal rendering of one result: a header line, the aligned checks table, the error,
+/// notes and figure paths.
+std::string formatStudyText(const StudyResult& r, const TextOptions& options = {});
+/// `soma study list`: an aligned table (ID, title, source, chapter, scalars) and its JSON form
+/// [{id, title, source, chapter, scalar_generic}].
+std::string formatStudyList(const std::vector<const Study*>& studies);
+std::string studyListJson(const std::vector<const Study*>& studies);
+
+/// "N passed, M failed" over studies, plus the checks and time: the last line of a run.
+std::string formatSummaryLine(const RunSummary& s);
+
+/// Seconds in a readable unit: "850 ns", "12.3 µs", "4.56 ms", "1.23 s", "2 min 5 s".
+std::string formatSeconds(double seconds);
+/// A double in 3 significant digits ("1.2e-15", "0", "inf", "nan").
+std::string formatShort(double x);
+
+/// Display width of UTF-8 text in terminal columns (one per code point, zero for combining marks).
+std::size_t displayWidth(std::string_view utf8);
+
+}  // namespace soma::studies
