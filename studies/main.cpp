@@ -1,2 +1,189 @@
-// placeholder: replaced by the CLI
-int main() { return 0; }
+// The `soma` command line (DESIGN §6, a contract: keep it stable).
+//   soma study list [--json]
+//   soma study run ID... [--scalar T] [--bits N] [--out DIR] [--no-figures] [--json]
+//   soma report [--out DIR] [--only GLOB]... [--scalar T] [--bits N] [--no-figures]
+// Exit codes: 0 every check passed, 1 a check or study failed, 2 bad input (usage, unknown
+// study or scalar, unwritable output).
+#include "soma/algebra/errors.hpp"
+#include "soma/algebra/scalar.hpp"
+#include "soma/studies/report.hpp"
+#include "soma/studies/runner.hpp"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+
+namespace {
+
+using namespace soma;
+using namespace soma::studies;
+
+constexpr int kExitFailed = 1;
+constexpr int kExitBadInput = 2;
+
+struct ScalarOptions {
+  std::string scalar = "double";
+  int bits = 256;
+};
+
+void addScalarOptions(CLI::App* app, ScalarOptions& o) {
+  app->add_option("--scalar", o.scalar,
+                  "scalar type of scalar-generic studies: " + scalarNames())
+      ->check(CLI::IsMember({"float", "double", "long-double", "float128", "mpfr"}))
+      ->capture_default_str();
+  app->add_option("--bits", o.bits, "mpfr precision in bits (with --scalar mpfr)")
+      ->check(CLI::Range(16, 100000))
+      ->capture_default_str();
+}
+
+/// Applies the scalar options; returns the kind (the name was already validated by CLI11).
+ScalarKind applyScalar(const ScalarOptions& o) {
+  const auto kind = parseScalarKind(o.scalar);
+  if (!kind) throw InvalidInput("unknown scalar '" + o.scalar + "' (one of " + scalarNames() + ")");
+  setMpfrBits(o.bits);
+  return *kind;
+}
+
+std::string commandLine(int argc, char** argv) {
+  std::string s;
+  for (int i = 0; i < argc; ++i) {
+    if (i) s += ' ';
+    s += argv[i];
+  }
+  return s;
+}
+
+bool useColor() { return isatty(STDOUT_FILENO) && std::getenv("NO_COLOR") == nullptr; }
+
+int studyList(bool json) {
+  const auto studies = allStudies();
+  std::cout << (json ? studyListJson(studies) + "\n" : formatStudyList(studies));
+  return 0;
+}
+
+int studyRun(const std::vector<std::string>& ids, const ScalarOptions& so,
+             const std::string& outDir, bool figures, bool json) {
+  const ScalarKind kind = applyScalar(so);
+  const auto selected = selectStudies(ids);
+  RunOptions opt;
+  opt.scalar = kind;
+  opt.outDir = outDir;
+  opt.makeFigures = figures;
+  TextOptions text;
+  text.outDir = outDir;
+  text.color = useColor();
+  const auto results = runStudies(selected, opt, [&](const StudyResult& r, std::size_t, std::size_t) {
+    if (!json) std::cout << formatStudyText(r, text) << std::flush;
+  });
+  const RunSummary sum = summarize(results);
+  if (json) {
+    nlohmann::json arr = nlohmann::json::array();
+    for (const auto& r : results) arr.push_back(nlohmann::json::parse(studyJson(r)));
+    std::cout << arr.dump(2) << "\n";
+  } else {
+    std::cout << formatSummaryLine(sum) << "\n";
+  }
+  return sum.allPassed() ? 0 : kExitFailed;
+}
+
+int report(const std::vector<std::string>& only, const ScalarOptions& so, const std::string& outDir,
+           bool figures, const std::string& command) {
+  const ScalarKind kind = applyScalar(so);
+  const auto selected = selectStudies(only);
+  RunOptions opt;
+  opt.scalar = kind;
+  opt.outDir = outDir;
+  opt.makeFigures = figures;
+  const bool color = useColor();
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto results =
+      runStudies(selected, opt, [&](const StudyResult& r, std::size_t k, std::size_t n) {
+        const bool ok = r.passed();
+        const std::string tag = color ? (ok ? "\033[1;32mPASS\033[0m" : "\033[1;31mFAIL\033[0m")
+                                      : (ok ? "PASS" : "FAIL");
+        std::cout << fmt::format("[{:>3}/{}] {}  {}  ({})\n", k + 1, n, tag, r.study->id,
+                                 formatSeconds(r.seconds))
+                  << std::flush;
+        if (!ok) {
+          TextOptions text;
+          text.outDir = outDir;
+          text.color = color;
+          std::cout << formatStudyText(r, text);
+        }
+      });
+  const double secs =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const ReportInfo info = collectReportInfo(kind, command, secs, figures);
+  writeReport(outDir, info, results);
+  const RunSummary sum = summarize(results);
+  std::cout << formatSummaryLine(sum) << "\n";
+  std::cout << "report: " << (std::filesystem::absolute(outDir) / "index.html").string() << "\n";
+  return sum.allPassed() ? 0 : kExitFailed;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"soma — geometry of robot kinematics (J.M. Selig, Geometric Fundamentals of Robotics)"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", std::string(somaVersion()));
+
+  // soma study list | run
+  auto* study = app.add_subcommand("study", "list or run the studies (one per catalogue item)");
+  study->require_subcommand(1);
+  bool listJson = false;
+  auto* list = study->add_subcommand("list", "every study: catalogue ID, title, source section");
+  list->add_flag("--json", listJson, "print a JSON array");
+
+  std::vector<std::string> runIds;
+  ScalarOptions runScalar;
+  std::string runOut = "out/report";
+  bool runNoFigures = false, runJson = false;
+  auto* run = study->add_subcommand("run", "run studies by ID or glob ('GF-4.*'); print every check");
+  run->add_option("ids", runIds, "study IDs or shell globs")->required();
+  addScalarOptions(run, runScalar);
+  run->add_option("--out", runOut, "directory for figures (DIR/figures/)")->capture_default_str();
+  run->add_flag("--no-figures", runNoFigures, "skip figures");
+  run->add_flag("--json", runJson, "print the results as JSON");
+
+  // soma report
+  std::vector<std::string> only;
+  ScalarOptions repScalar;
+  std::string repOut = "out/report";
+  bool repNoFigures = false;
+  auto* rep = app.add_subcommand("report", "run studies and write DIR/index.html, report.json, figures");
+  rep->add_option("--out", repOut, "output directory")->capture_default_str();
+  rep->add_option("--only", only, "only studies matching these IDs or globs (repeatable)");
+  addScalarOptions(rep, repScalar);
+  rep->add_flag("--no-figures", repNoFigures, "skip figures");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);
+    return rc == 0 ? 0 : kExitBadInput;
+  }
+
+  try {
+    if (list->parsed()) return studyList(listJson);
+    if (run->parsed()) return studyRun(runIds, runScalar, runOut, !runNoFigures, runJson);
+    if (rep->parsed()) return report(only, repScalar, repOut, !repNoFigures, commandLine(argc, argv));
+  } catch (const SelectionError& e) {
+    std::cerr << "soma: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const InvalidInput& e) {
+    std::cerr << "soma: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "soma: " << e.what() << "\n";
+    return kExitBadInput;
+  }
+  return kExitBadInput;
+}
