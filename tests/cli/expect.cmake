@@ -1,0 +1,13 @@
+# Run a command and check its exit code and output (stdout + stderr):
+#   cmake -DCMD="soma;study;run;x" -DRC=2 -DMATCH="regex" -P expect.cmake
+# Used by CTest to test the `soma` command line's contract (DESIGN §6, §10).
+execute_process(COMMAND ${CMD} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
+                TIMEOUT 600)
+set(all "${out}${err}")
+if(NOT "${rc}" STREQUAL "${RC}")
+  message(FATAL_ERROR "expected exit code ${RC}, got ${rc}\n--- output ---\n${all}")
+endif()
+if(DEFINED MATCH AND NOT "${all}" MATCHES "${MATCH}")
+  message(FATAL_ERROR "output does not match '${MATCH}'\n--- output ---\n${all}")
+endif()
+message(STATUS "exit ${rc} as expected")
