@@ -1,0 +1,26 @@
+#pragma once
+// Reading a pose file (DESIGN §6): {"rotation": [[3x3]], "translation": [x, y, z]}, or with
+// "quaternion": [w, x, y, z] instead of "rotation". Numbers may be JSON numbers (read as double)
+// or decimal strings ("0.1"), which are parsed exactly into the scalar type (for mpfr/float128).
+// Every defect is an InvalidInput naming the file and the field: never silently renormalised.
+#include "soma/algebra/se3.hpp"
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <filesystem>
+#include <string>
+
+namespace soma::studies {
+
+/// Parse a pose from JSON text; `origin` names the source in messages (a path or "<string>").
+template <class S> SE3<S> parsePose(const std::string& text, const std::string& origin);
+/// Read and parse a pose file. Throws InvalidInput for a missing/unreadable file or bad content.
+template <class S> SE3<S> readPose(const std::filesystem::path& file);
+
+#define SOMA_POSE_EXTERN(S)                                                          \
+  extern template SE3<S> parsePose<S>(const std::string&, const std::string&);       \
+  extern template SE3<S> readPose<S>(const std::filesystem::path&);
+SOMA_FOR_EACH_SCALAR(SOMA_POSE_EXTERN)
+#undef SOMA_POSE_EXTERN
+
+}  // namespace soma::studies

@@ -1,0 +1,89 @@
+#include "soma/studies/pose_file.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <sstream>
+
+namespace soma::studies {
+
+namespace {
+using json = nlohmann::json;
+
+template <class S> S number(const json& j, const std::string& where) {
+  if (j.is_number()) return scalarCast<S>(j.get<double>());
+  if (j.is_string()) {
+    const std::string t = j.get<std::string>();
+    try {
+      std::size_t used = 0;
+      (void)std::stod(t, &used);  // the text must be a whole decimal number
+      if (used != t.size()) throw std::invalid_argument(t);
+    } catch (const std::exception&) {
+      throw InvalidInput(where + ": \"" + t + "\" is not a number");
+    }
+    return fromString<S>(t);
+  }
+  throw InvalidInput(where + ": expected a number, got " + std::string(j.type_name()));
+}
+
+template <class S, int N> Eigen::Matrix<S, N, 1> vector(const json& j, const std::string& where) {
+  if (!j.is_array() || j.size() != std::size_t(N))
+    throw InvalidInput(where + ": expected an array of " + std::to_string(N) + " numbers");
+  Eigen::Matrix<S, N, 1> v;
+  for (int i = 0; i < N; ++i) v(i) = number<S>(j[i], where + "[" + std::to_string(i) + "]");
+  if (!allFinite(v)) throw InvalidInput(where + ": has a NaN or infinite entry");
+  return v;
+}
+}  // namespace
+
+template <class S> SE3<S> parsePose(const std::string& text, const std::string& origin) {
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw InvalidInput(origin + ": not valid JSON (" + e.what() + ")");
+  }
+  if (!j.is_object()) throw InvalidInput(origin + ": a pose must be a JSON object");
+  for (const auto& [key, value] : j.items())
+    if (key != "rotation" && key != "quaternion" && key != "translation")
+      throw InvalidInput(origin + ": unknown field \"" + key +
+                         "\" (a pose has \"rotation\" or \"quaternion\", and \"translation\")");
+  if (!j.contains("translation")) throw InvalidInput(origin + ": missing \"translation\"");
+  const Vec3<S> t = vector<S, 3>(j["translation"], origin + ": translation");
+  const bool hasR = j.contains("rotation"), hasQ = j.contains("quaternion");
+  if (hasR == hasQ)
+    throw InvalidInput(origin + ": give exactly one of \"rotation\" (3x3) and \"quaternion\" [w,x,y,z]");
+  try {
+    if (hasQ) {
+      const Vec4<S> q = vector<S, 4>(j["quaternion"], origin + ": quaternion");
+      return SE3<S>(SO3<S>::fromQuaternion(Quat<S>(q(0), q(1), q(2), q(3))), t);
+    }
+    const json& r = j["rotation"];
+    if (!r.is_array() || r.size() != 3)
+      throw InvalidInput(origin + ": rotation: expected 3 rows of 3 numbers");
+    Mat3<S> m;
+    for (int i = 0; i < 3; ++i)
+      m.row(i) = vector<S, 3>(r[i], origin + ": rotation[" + std::to_string(i) + "]").transpose();
+    return SE3<S>(SO3<S>::fromMatrix(m), t);
+  } catch (const InvalidInput& e) {
+    const std::string msg = e.what();
+    if (msg.rfind(origin, 0) == 0) throw;
+    throw InvalidInput(origin + ": " + msg);
+  }
+}
+
+template <class S> SE3<S> readPose(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw InvalidInput(file.string() + ": cannot open the pose file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return parsePose<S>(ss.str(), file.string());
+}
+
+#define SOMA_POSE_INSTANTIATE(S)                                              \
+  template SE3<S> parsePose<S>(const std::string&, const std::string&);       \
+  template SE3<S> readPose<S>(const std::filesystem::path&);
+SOMA_FOR_EACH_SCALAR(SOMA_POSE_INSTANTIATE)
+#undef SOMA_POSE_INSTANTIATE
+
+}  // namespace soma::studies

@@ -1,0 +1,50 @@
+// Pose files: both rotation forms, exact decimal strings, and every defect named in the message.
+#include "soma/studies/pose_file.hpp"
+
+#include "support/scalars.hpp"
+
+using namespace soma;
+using namespace soma::studies;
+using Catch::Contains;
+
+TEMPLATE_TEST_CASE("parsePose reads a rotation matrix or a quaternion", "[pose]", SOMA_TEST_SCALARS) {
+  using S = TestType;
+  // Rotation by π/2 about z, as a matrix and as the quaternion (cos π/4, 0, 0, sin π/4).
+  const auto a = parsePose<S>(
+      R"({"rotation": [[0,-1,0],[1,0,0],[0,0,1]], "translation": [1, 2, "0.1"]})", "a");
+  const auto b = parsePose<S>(
+      R"({"quaternion": ["0.70710678118654752440084436210484903928483593768847",0,0,
+                         "0.70710678118654752440084436210484903928483593768847"],
+          "translation": [1, 2, "0.1"]})", "b");
+  CHECK(a.isApprox(b, S(8) * Tolerance<S>::epsilon()));
+  CHECK(a.act(Vec3<S>(1, 0, 0)).isApprox(Vec3<S>(S(1), S(3), fromString<S>("0.1")),
+                                         S(8) * Tolerance<S>::epsilon()));
+  // A decimal string is parsed in S, not through double.
+  CHECK(a.translation().z() == fromString<S>("0.1"));
+}
+
+TEST_CASE("parsePose names the defect of bad input", "[pose]") {
+  using S = double;
+  const std::string t = R"("translation": [0,0,0])";
+  CHECK_THROWS_WITH(parsePose<S>("{", "p.json"), Contains("p.json: not valid JSON"));
+  CHECK_THROWS_WITH(parsePose<S>("[1]", "p.json"), Contains("must be a JSON object"));
+  CHECK_THROWS_WITH(parsePose<S>(R"({"rotation": [[1,0,0],[0,1,0],[0,0,1]]})", "p.json"),
+                    Contains("missing \"translation\""));
+  CHECK_THROWS_WITH(parsePose<S>("{" + t + "}", "p.json"), Contains("exactly one of"));
+  CHECK_THROWS_WITH(parsePose<S>(R"({"rotation": [[1,0,0],[0,1,0],[0,0,1]], "quaternion": [1,0,0,0], )" + t + "}", "p.json"),
+                    Contains("exactly one of"));
+  CHECK_THROWS_WITH(parsePose<S>(R"({"rot": 1, )" + t + "}", "p.json"), Contains("unknown field \"rot\""));
+  CHECK_THROWS_WITH(parsePose<S>(R"({"rotation": [[1,0,0],[0,1,0],[0,0,1]], "translation": [0, "nan", 0]})", "p.json"),
+                    Contains("translation: has a NaN"));
+  CHECK_THROWS_WITH(parsePose<S>(R"({"rotation": [[1,0,0],[0,1,0],[0,0,1]], "translation": [0, "x", 0]})", "p.json"),
+                    Contains("translation[1]: \"x\" is not a number"));
+  CHECK_THROWS_WITH(parsePose<S>(R"({"rotation": [[1,0,0],[0,1,0]], )" + t + "}", "p.json"),
+                    Contains("3 rows"));
+  CHECK_THROWS_WITH(parsePose<S>(R"({"rotation": [[1,0.1,0],[0,1,0],[0,0,1]], )" + t + "}", "p.json"),
+                    Contains("p.json: SO3::fromMatrix: matrix is not orthogonal"));
+  CHECK_THROWS_WITH(parsePose<S>(R"({"rotation": [[-1,0,0],[0,1,0],[0,0,1]], )" + t + "}", "p.json"),
+                    Contains("det = −1"));
+  CHECK_THROWS_WITH(parsePose<S>(R"({"quaternion": [1,0,0,0.1], )" + t + "}", "p.json"),
+                    Contains("quaternion is not unit"));
+  CHECK_THROWS_WITH(readPose<S>("/nonexistent/pose.json"), Contains("cannot open"));
+}
