@@ -12,6 +12,7 @@
 //  * the rotation is stored as the unit complex number (c, s) = (cos θ, sin θ).
 #include "soma/algebra/scalar.hpp"
 #include "soma/algebra/errors.hpp"
+#include "soma/algebra/taylor.hpp"
 #include "soma/algebra/tolerance.hpp"
 
 #include <random>
@@ -46,14 +47,15 @@ template <class S> S cosc(const S& th) {
   const S h = sin(th / S(2));
   return S(2) * h * h / t2;
 }
-/// (θ − sin θ) / θ³
+/// (θ − sin θ) / θ³. Above the switch the numerator comes from detail::thetaMinusSin: the
+/// plain difference θ − sin θ cancels (relative error ≈ 6ε/θ², 1e3 ulp at θ = 1e-4 in
+/// float128), which is what the dexp/Jacobian checks against a 512-bit series caught.
 template <class S> S sincc(const S& th) {
   using std::abs;
-  using std::sin;
   const S t2 = th * th;
   if (abs(th) < Tolerance<S>::precision(7))
     return S(1) / S(6) - t2 / S(120) * (S(1) - t2 / S(42) * (S(1) - t2 / S(72)));
-  return (th - sin(th)) / (t2 * th);
+  return thetaMinusSin(th) / (t2 * th);
 }
 /// (θ/2)·cot(θ/2), evaluated from the half angle (no cancellation near θ = π, where it → 0).
 /// Throws when θ/2 is a nonzero multiple of π (V(θ) singular: θ = ±2π, ...).
@@ -199,8 +201,19 @@ template <class S> class SE2 {
   /// Same motion within tol (max-norm on the matrix entries, relative to 1 + |t|).
   bool isApprox(const SE2& o, const S& tol = Tolerance<S>::identity()) const;
 
+  /// The same element in another rung: (c, s, t) cast exactly where T can hold them, then
+  /// (c, s) normalised in T. No input validation: a unit complex number of S is unit only to
+  /// ε_S, which is far outside Tolerance<T>::input() when T is wider (mpfr), so checking it as
+  /// user input would reject every up-cast.
   template <class T> SE2<T> cast() const {
-    return SE2<T>::fromComplex(scalarCast<T>(c_), scalarCast<T>(s_), castMatrix<T>(t_));
+    return SE2<T>::fromComplexUnchecked(scalarCast<T>(c_), scalarCast<T>(s_), castMatrix<T>(t_));
+  }
+  /// No validation: (c, s) must already be a unit complex number up to rounding (casts,
+  /// products); it is normalised. User input goes through fromComplex.
+  static SE2 fromComplexUnchecked(const S& c, const S& s, const Vec2<S>& t) {
+    using std::sqrt;
+    const S n = sqrt(c * c + s * s);
+    return SE2(Raw{}, c / n, s / n, t);
   }
 
  private:
@@ -337,9 +350,12 @@ template <class S> SE2<S> SE2<S>::rotationAbout(const S& angle, const Vec2<S>& c
 
 template <class S> S SE2<S>::angle() const {
   using std::atan2;
-  S th = atan2(s_, c_);
-  if (th == -pi<S>()) th = pi<S>();  // keep θ in (−π, π]
-  return th;
+  // θ ∈ (−π, π]: only the exact half-turn s = ±0, c < 0 is mapped to +π (atan2(−0, −1) = −π).
+  // A tiny negative s is a genuine angle −π + |s|: its correctly rounded value may be −π_S
+  // (when π_S > π, as for float and long double) and must keep its sign, so that
+  // log(exp(ξ)) follows the principal branch and sign(ω) = sign(s).
+  if (s_ == S(0) && c_ < S(0)) return pi<S>();
+  return atan2(s_, c_);
 }
 
 template <class S> Mat2<S> SE2<S>::rotation() const {
