@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -48,23 +49,32 @@ namespace {
 struct FreeType {
   FT_Library lib = nullptr;
   FT_Face face = nullptr;
-  FreeType() {
-    const std::filesystem::path path = fontPath();
+  std::filesystem::path path;
+  explicit FreeType(const std::filesystem::path& p) : path(p) {
     if (FT_Init_FreeType(&lib)) throw std::runtime_error("soma::render: FreeType initialisation failed");
     if (FT_New_Face(lib, path.c_str(), 0, &face)) {
       FT_Done_FreeType(lib);
       throw std::runtime_error("soma::render: FreeType cannot load the font '" + path.string() + "'");
     }
   }
+  FreeType(const FreeType&) = delete;
+  FreeType& operator=(const FreeType&) = delete;
   ~FreeType() {
     FT_Done_Face(face);
     FT_Done_FreeType(lib);
   }
 };
 
+// The face of fontPath(), loaded once and reloaded when fontPath() changes (SOMA_FONT set or
+// unset between renders). fontPath() is consulted on every call, so a missing font always throws.
 FreeType& freetype() {
-  static FreeType ft;  // a failure throws and is retried on the next call
-  return ft;
+  static std::unique_ptr<FreeType> ft;
+  const std::filesystem::path path = fontPath();
+  if (!ft || ft->path != path) {
+    ft.reset();
+    ft = std::make_unique<FreeType>(path);
+  }
+  return *ft;
 }
 
 std::u32string decodeUtf8(const std::string& s) {

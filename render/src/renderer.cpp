@@ -1,0 +1,710 @@
+// Rendering a Scene off-screen with OSMesa: legacy fixed-function OpenGL on Mesa llvmpipe.
+//
+// One render: validate; tessellate the shaded primitives into triangle batches (world coordinates
+// relative to the scene's centre); turn every polyline into screen-space triangles of constant pixel
+// width (round joints and ends, dashes) in the coordinates of the "virtual" image that is actually
+// rasterised; draw opaque geometry, then opaque lines, then transparent meshes and lines without
+// depth writes; average the samples in linear light; draw labels and the title with FreeType on the
+// final 8-bit image (text is never hidden, and it is anti-aliased by FreeType itself).
+#include "soma/render/renderer.hpp"
+
+#include "detail.hpp"
+#include "tessellate.hpp"
+#include "text.hpp"
+
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/osmesa.h>
+#include <GL/gl.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace soma::render {
+
+Camera effectiveCamera(const Scene& scene, const RenderOptions& options) {
+  if (options.camera) {
+    options.camera->validate();
+    return *options.camera;
+  }
+  FitOptions fit;
+  fit.width = options.width;
+  fit.height = options.height;
+  return Camera::fit(scene, RenderOptions::defaultViewDirection(), fit);
+}
+
+namespace {
+
+using detail::invalid;
+constexpr double pi = std::numbers::pi;
+constexpr int maxImageSide = 16384;
+constexpr int maxSamples = 16;
+constexpr int maxTileSide = 4096;  // bounds the memory of one supersampled pass (colour + depth)
+
+std::mutex& renderMutex() {
+  static std::mutex m;
+  return m;
+}
+
+// ---------------------------------------------------------------------------------------------
+// sRGB <-> linear light (IEC 61966-2-1), 8-bit codes.
+struct Srgb {
+  std::array<float, 256> toLinear{};
+  std::array<float, 255> threshold{};  ///< linear value of the encoded midpoint between codes k, k+1
+  Srgb() {
+    auto decode = [](double u) { return u <= 0.04045 ? u / 12.92 : std::pow((u + 0.055) / 1.055, 2.4); };
+    for (int k = 0; k < 256; ++k) toLinear[k] = float(decode(k / 255.0));
+    for (int k = 0; k < 255; ++k) threshold[k] = float(decode((k + 0.5) / 255.0));
+  }
+  /// The code whose encoded value is nearest: exact inverse of toLinear on the 256 codes.
+  std::uint8_t encode(float linear) const {
+    return std::uint8_t(std::upper_bound(threshold.begin(), threshold.end(), linear) - threshold.begin());
+  }
+};
+const Srgb& srgb() {
+  static const Srgb s;
+  return s;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The OSMesa context: created on first use, kept for the life of the process (deliberately not
+// destroyed at exit: Mesa's own teardown order is not ours to rely on). Used under renderMutex().
+struct GlContext {
+  OSMesaContext ctx = nullptr;
+  std::vector<std::uint8_t> buffer;  // OSMesa's colour buffer (we read back with glReadPixels)
+  int maxWidth = 0, maxHeight = 0;
+
+  void bind(int w, int h) {
+    if (!ctx) {
+      ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);
+      if (!ctx) throw std::runtime_error("soma::render: OSMesaCreateContextExt failed (is libOSMesa's llvmpipe usable?)");
+    }
+    buffer.resize(std::size_t(w) * h * 4);
+    if (!OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, w, h))
+      throw std::runtime_error("soma::render: OSMesaMakeCurrent failed for a " + std::to_string(w) + "x" +
+                               std::to_string(h) + " buffer");
+    if (maxWidth == 0) {
+      GLint v = 0;
+      OSMesaGetIntegerv(OSMESA_MAX_WIDTH, &v);
+      maxWidth = v > 0 ? v : 2048;
+      OSMesaGetIntegerv(OSMESA_MAX_HEIGHT, &v);
+      maxHeight = v > 0 ? v : 2048;
+      GLint dims[2] = {0, 0};
+      glGetIntegerv(GL_MAX_VIEWPORT_DIMS, dims);
+      if (dims[0] > 0) maxWidth = std::min(maxWidth, int(dims[0]));
+      if (dims[1] > 0) maxHeight = std::min(maxHeight, int(dims[1]));
+    }
+  }
+  // Leave no context current on this thread: the next render may come from another thread.
+  void release() { OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0); }
+};
+GlContext& glContext() {
+  static GlContext* c = new GlContext;  // never destroyed, see above
+  return *c;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Lighting (eye space; the camera looks down -z): a key light from the upper left behind the
+// viewer, a weak fill from the right, a global ambient term, a modest white highlight. Documented
+// in render/README.md; tests/render checks the centre of a sphere against it.
+constexpr float ambient = 0.30f;
+constexpr float keyDiffuse = 0.65f, keySpecular = 0.25f, fillDiffuse = 0.20f, shininess = 48.0f;
+constexpr float keyDir[4] = {-0.35f, 0.55f, 1.0f, 0.0f};
+constexpr float fillDir[4] = {0.60f, -0.25f, 0.60f, 0.0f};
+/// Back faces of two-sided surfaces get this tint towards white, so inside and outside differ.
+constexpr float backTint = 0.35f;
+
+/// Line depth bias: lines are moved towards the eye by this many times (half width + 1 px) of
+/// world length, so a curve drawn on a surface is not half-buried in it.
+constexpr double lineBias = 2.0;
+
+// ---------------------------------------------------------------------------------------------
+// Everything a pass draws, prepared once per render.
+struct LineMesh {
+  std::vector<double> xyz;  // virtual-window coordinates: x right, y up (pixels), z = NDC depth
+  std::vector<unsigned> idx;
+  Color c;
+};
+
+struct Text {
+  std::string text;
+  double x, y;
+  detail::TextStyle style;
+};
+
+struct Prepared {
+  Scene const* scene = nullptr;
+  Camera cam;
+  int W = 0, H = 0, samples = 1;
+  bool supersample = true;
+  int Wv = 0, Hv = 0;  // size of the rasterised ("virtual") image
+  double vscale = 1;   // virtual pixels per output pixel
+  Eigen::Matrix4d view, proj;
+  double zNear = 0, zFar = 0;
+  // Shaded triangles: closed solids (back faces culled) and two-sided surfaces, opaque and transparent.
+  detail::Batch solid, surface, solidT, surfaceT;
+  std::vector<float> surfaceBack, surfaceTBack;  // back-face colours of the two-sided batches
+  std::vector<LineMesh> lines, linesT;
+  std::vector<Text> texts;
+};
+
+bool transparent(const Color& c) { return c.a < 1.0f; }
+
+std::vector<float> backColours(const std::vector<float>& col) {
+  std::vector<float> out(col.size());
+  for (std::size_t i = 0; i < col.size(); i += 4) {
+    for (int k = 0; k < 3; ++k) out[i + k] = col[i + k] + (1 - col[i + k]) * backTint;
+    out[i + 3] = col[i + 3];
+  }
+  return out;
+}
+
+// Near and far planes enclosing the scene's bounding box.
+void depthRange(Prepared& pr) {
+  Eigen::AlignedBox3d box = pr.scene->bounds();
+  if (box.isEmpty()) box = Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-0.5), Eigen::Vector3d::Constant(0.5));
+  const double ext = std::max(box.diagonal().norm(), 1e-300);
+  double dmin = 1e300, dmax = -1e300;
+  for (int k = 0; k < 8; ++k) {
+    const double d = pr.cam.depth(box.corner(Eigen::AlignedBox3d::CornerType(k)));
+    dmin = std::min(dmin, d), dmax = std::max(dmax, d);
+  }
+  if (pr.cam.orthographic) {
+    const double pad = 0.05 * ext + 0.05 * (dmax - dmin);
+    pr.zNear = dmin - pad;
+    pr.zFar = dmax + pad;
+  } else if (dmax <= 0) {  // everything behind the eye: nothing is visible
+    pr.zNear = 1e-3 * ext;
+    pr.zFar = ext;
+  } else {
+    pr.zFar = dmax * 1.02;
+    pr.zNear = std::max(0.8 * dmin, pr.zFar * 1e-5);
+  }
+}
+
+// Output pixels per world unit at p (for choosing tessellation density).
+double pixelsPerUnit(const Prepared& pr, const Eigen::Vector3d& p) {
+  if (pr.cam.orthographic) return pr.H / pr.cam.orthoHeight;
+  const double d = pr.cam.depth(p);
+  if (!(d > pr.zNear)) return pr.H / (2 * std::tan(pr.cam.fovYDegrees * pi / 360) * pr.zNear);
+  return pr.H / (2 * std::tan(pr.cam.fovYDegrees * pi / 360) * d);
+}
+
+void tessellate(Prepared& pr) {
+  const Scene& s = *pr.scene;
+  Eigen::AlignedBox3d box = s.bounds();
+  const Eigen::Vector3d origin = box.isEmpty() ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : Eigen::Vector3d(box.center());
+  for (detail::Batch* b : {&pr.solid, &pr.surface, &pr.solidT, &pr.surfaceT}) b->origin = origin;
+  const double L = s.characteristicLength();
+  const detail::PixelScale ppu = [&pr](const Eigen::Vector3d& p) { return pixelsPerUnit(pr, p); };
+  auto solidFor = [&pr](const Color& c) -> detail::Batch& { return transparent(c) ? pr.solidT : pr.solid; };
+
+  for (const Points& x : s.points) {
+    const double r = detail::pointRadius(x, L);
+    for (const auto& p : x.p) detail::addSphere(solidFor(x.c), p, r, x.c, detail::circleSegments(r, p, ppu));
+  }
+  for (const Tube& x : s.tubes) detail::addTube(solidFor(x.c), x.p, detail::tubeRadius(x, L), x.c, x.closed, ppu);
+  for (const Mesh& x : s.meshes) {
+    if (x.twoSided) detail::addMesh(transparent(x.c) ? pr.surfaceT : pr.surface, x);
+    else detail::addMesh(solidFor(x.c), x);
+  }
+  const Color axis[3] = {palette::axisX, palette::axisY, palette::axisZ};
+  for (const Frame& f : s.frames) {
+    const double sc = detail::frameScale(f, L), r = detail::frameArrowRadius * sc;
+    const Eigen::Vector3d o = f.pose.block<3, 1>(0, 3);
+    for (int k = 0; k < 3; ++k)
+      detail::addArrow(pr.solid, o, o + sc * Eigen::Vector3d(f.pose.block<3, 1>(0, k)), r, axis[k], ppu);
+    detail::addSphere(pr.solid, o, 1.6 * r, palette::darkGrey, detail::circleSegments(1.6 * r, o, ppu));
+  }
+  for (const Arrow& a : s.arrows) detail::addArrow(solidFor(a.c), a.from, a.to, detail::arrowRadius(a, L), a.c, ppu);
+  if (s.axes) {
+    const double len = detail::axesLength(s, L);
+    for (int k = 0; k < 3; ++k)
+      detail::addArrow(pr.solid, Eigen::Vector3d::Zero(), len * Eigen::Vector3d::Unit(k), 0.018 * len, axis[k], ppu);
+  }
+  pr.surfaceBack = backColours(pr.surface.col);
+  pr.surfaceTBack = backColours(pr.surfaceT.col);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Polylines: constant pixel width, round joints and ends, dashes measured along the projected curve.
+
+// Eye-space point (biased towards the eye) -> virtual-window point (x, y up, NDC z).
+Eigen::Vector3d toWindow(const Prepared& pr, const Eigen::Vector4d& e) {
+  const Eigen::Vector4d c = pr.proj * e;
+  return {(c.x() / c.w() + 1) / 2 * pr.Wv, (c.y() / c.w() + 1) / 2 * pr.Hv, c.z() / c.w()};
+}
+
+void addDisc(LineMesh& m, const Eigen::Vector3d& c, double r) {
+  const int n = r > 0.3 ? std::clamp(int(std::ceil(pi / std::acos(1 - 0.25 / r))), 8, 64) : 8;
+  const unsigned centre = unsigned(m.xyz.size() / 3);
+  m.xyz.insert(m.xyz.end(), {c.x(), c.y(), c.z()});
+  for (int k = 0; k < n; ++k) {
+    const double a = 2 * pi * k / n;
+    m.xyz.insert(m.xyz.end(), {c.x() + r * std::cos(a), c.y() + r * std::sin(a), c.z()});
+  }
+  for (int k = 0; k < n; ++k) m.idx.insert(m.idx.end(), {centre, centre + 1 + k, centre + 1 + (k + 1) % n});
+}
+
+// A piece of a curve (window points) as a strip of quads plus a disc at every point.
+void addPiece(LineMesh& m, const std::vector<Eigen::Vector3d>& q, double hw) {
+  for (std::size_t i = 0; i + 1 < q.size(); ++i) {
+    const Eigen::Vector2d d = (q[i + 1] - q[i]).head<2>();
+    const double len = d.norm();
+    if (!(len > 1e-9)) continue;
+    const Eigen::Vector2d n = Eigen::Vector2d(-d.y(), d.x()) * (hw / len);
+    const unsigned b = unsigned(m.xyz.size() / 3);
+    for (const auto& [p, s] : {std::pair{q[i], 1.0}, std::pair{q[i], -1.0}, std::pair{q[i + 1], 1.0}, std::pair{q[i + 1], -1.0}})
+      m.xyz.insert(m.xyz.end(), {p.x() + s * n.x(), p.y() + s * n.y(), p.z()});
+    m.idx.insert(m.idx.end(), {b, b + 1, b + 3, b, b + 3, b + 2});
+  }
+  for (const auto& p : q) addDisc(m, p, hw);
+}
+
+LineMesh polylineMesh(const Prepared& pr, const Polyline& pl) {
+  LineMesh m;
+  m.c = pl.c;
+  if (pl.p.empty()) return m;
+  const double hwOut = pl.width / 2;               // output pixels
+  const double hw = hwOut * pr.vscale;              // virtual pixels
+  // Depth bias towards the eye (see lineBias).
+  const double tanHalf = std::tan(pr.cam.fovYDegrees * pi / 360);
+  const double shrink = std::min(0.1, lineBias * (hwOut + 1) * 2 * tanHalf / pr.H);  // perspective: relative
+  const double shift = lineBias * (hwOut + 1) * pr.cam.orthoHeight / pr.H;           // orthographic: absolute
+  std::vector<Eigen::Vector4d> e;
+  e.reserve(pl.p.size() + 1);
+  for (const auto& p : pl.p) {
+    Eigen::Vector4d x = pr.view * p.homogeneous();
+    if (pr.cam.orthographic) {
+      x.z() += shift;
+    } else {
+      const double d = -x.z();
+      if (d > pr.zNear) {
+        const double dn = std::max(d * (1 - shrink), std::min(d, pr.zNear * (1 + 1e-6)));
+        x.head<3>() *= dn / d;
+      }
+    }
+    e.push_back(x);
+  }
+  // Runs of window points, split where the curve leaves the half-space in front of the near plane.
+  std::vector<std::vector<Eigen::Vector3d>> runs;
+  const std::size_t n = e.size();
+  if (n == 1) {
+    if (pr.cam.orthographic || -e[0].z() >= pr.zNear) runs.push_back({toWindow(pr, e[0])});
+  } else {
+    const bool closed = pl.closed && n > 2;
+    const std::size_t nseg = closed ? n : n - 1;
+    const double zn = pr.zNear * (1 + 1e-9);
+    std::vector<Eigen::Vector3d> cur;
+    for (std::size_t i = 0; i < nseg; ++i) {
+      const Eigen::Vector4d& a = e[i];
+      const Eigen::Vector4d& b = e[(i + 1) % n];
+      double t0 = 0, t1 = 1;
+      if (!pr.cam.orthographic) {
+        const double da = -a.z(), db = -b.z();
+        if (da < zn && db < zn) t0 = 1, t1 = 0;
+        else if (da < zn) t0 = (zn - da) / (db - da);
+        else if (db < zn) t1 = (zn - da) / (db - da);
+      }
+      if (t0 > t1) {
+        if (!cur.empty()) runs.push_back(std::move(cur)), cur.clear();
+        continue;
+      }
+      if (cur.empty() || t0 > 0) {
+        if (!cur.empty()) runs.push_back(std::move(cur)), cur.clear();
+        cur.push_back(toWindow(pr, a + t0 * (b - a)));
+      }
+      cur.push_back(toWindow(pr, a + t1 * (b - a)));
+      if (t1 < 1) runs.push_back(std::move(cur)), cur.clear();
+    }
+    if (!cur.empty()) runs.push_back(std::move(cur));
+  }
+  if (!pl.dashed) {
+    for (const auto& r : runs) addPiece(m, r, hw);
+    return m;
+  }
+  // Dashes: on for dashLength output pixels, off for as long, continuing across joints and runs.
+  const double L = pl.dashLength * pr.vscale;
+  double pos = 0;
+  for (const auto& r : runs) {
+    std::vector<Eigen::Vector3d> piece;
+    bool on = std::fmod(pos, 2 * L) < L;
+    if (on) piece.push_back(r[0]);
+    for (std::size_t j = 0; j + 1 < r.size(); ++j) {
+      const double len = (r[j + 1] - r[j]).head<2>().norm();
+      const double start = pos, end = pos + len;
+      for (double k = std::floor(pos / L) + 1; k * L < end; k += 1) {
+        const Eigen::Vector3d x = r[j] + (k * L - start) / len * (r[j + 1] - r[j]);
+        if (on) {
+          piece.push_back(x);
+          addPiece(m, piece, hw);
+          piece.clear();
+        } else {
+          piece = {x};
+        }
+        on = !on;
+      }
+      if (on) piece.push_back(r[j + 1]);
+      pos = end;
+    }
+    if (on && !piece.empty()) addPiece(m, piece, hw);
+  }
+  return m;
+}
+
+void prepareLines(Prepared& pr) {
+  for (const Polyline& pl : pr.scene->polylines) {
+    LineMesh m = polylineMesh(pr, pl);
+    if (m.idx.empty()) continue;
+    (transparent(pl.c) ? pr.linesT : pr.lines).push_back(std::move(m));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Text: labels, world-axis names, the title (output pixels, top-down).
+void prepareText(Prepared& pr) {
+  const Scene& s = *pr.scene;
+  const Color halo = s.background.withAlpha(1.0f);
+  auto visible = [&pr](const Eigen::Vector3d& p) { return pr.cam.orthographic || pr.cam.depth(p) > 0; };
+  for (const Label& l : s.labels) {
+    if (l.text.empty() || !visible(l.at)) continue;
+    const Eigen::Vector2d p = pr.cam.project(l.at, pr.W, pr.H) + l.offset;
+    detail::TextStyle st;
+    st.pixelHeight = l.pixelHeight;
+    st.color = l.c;
+    if (l.halo) st.halo = halo;
+    st.hAlign = l.hAlign;
+    st.vAlign = l.vAlign;
+    pr.texts.push_back({l.text, p.x(), p.y(), st});
+  }
+  if (s.axes) {
+    const double len = detail::axesLength(s, s.characteristicLength());
+    const char* names[3] = {"x", "y", "z"};
+    const Color colour[3] = {palette::axisX.darker(0.25f), palette::axisY.darker(0.25f), palette::axisZ.darker(0.25f)};
+    const Eigen::Vector3d o = Eigen::Vector3d::Zero();
+    if (visible(o)) {
+      const Eigen::Vector2d po = pr.cam.project(o, pr.W, pr.H);
+      for (int k = 0; k < 3; ++k) {
+        const Eigen::Vector3d tip = len * Eigen::Vector3d::Unit(k);
+        if (!visible(tip)) continue;
+        const Eigen::Vector2d pt = pr.cam.project(tip, pr.W, pr.H);
+        Eigen::Vector2d d = pt - po;
+        d = d.norm() > 1e-9 ? Eigen::Vector2d(d.normalized()) : Eigen::Vector2d(1, 0);
+        detail::TextStyle st;
+        st.pixelHeight = 22;
+        st.color = colour[k];
+        st.halo = halo;
+        st.hAlign = HAlign::Center;
+        st.vAlign = VAlign::Middle;
+        const Eigen::Vector2d at = pt + d * (0.75 * st.pixelHeight);
+        pr.texts.push_back({names[k], at.x(), at.y(), st});
+      }
+    }
+  }
+  if (!s.title.empty()) {
+    detail::TextStyle st;
+    st.pixelHeight = s.titlePixelHeight;
+    st.color = palette::black;
+    st.halo = halo;
+    st.hAlign = HAlign::Center;
+    st.vAlign = VAlign::Top;
+    pr.texts.push_back({s.title, pr.W / 2.0, 0.6 * s.titlePixelHeight, st});
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// One rasterisation pass into the current OSMesa buffer (tw x th pixels), with `tile` applied
+// after the projection (it selects a sub-window of the virtual image and a sub-pixel jitter).
+
+void drawBatch(const detail::Batch& b, const std::vector<float>* colours, const Eigen::Matrix4d& view) {
+  if (b.empty()) return;
+  Eigen::Matrix4d mv = view;
+  mv.block<3, 1>(0, 3) += view.block<3, 3>(0, 0) * b.origin;
+  glMatrixMode(GL_MODELVIEW);
+  glLoadMatrixd(mv.data());
+  glVertexPointer(3, GL_FLOAT, 0, b.pos.data());
+  glNormalPointer(GL_FLOAT, 0, b.nrm.data());
+  glColorPointer(4, GL_FLOAT, 0, colours ? colours->data() : b.col.data());
+  glDrawElements(GL_TRIANGLES, GLsizei(b.idx.size()), GL_UNSIGNED_INT, b.idx.data());
+}
+
+// Two-sided surface: back faces (tinted), then front faces; two-sided lighting flips back normals.
+void drawSurface(const detail::Batch& b, const std::vector<float>& back, const Eigen::Matrix4d& view) {
+  if (b.empty()) return;
+  glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_FRONT);
+  drawBatch(b, &back, view);
+  glCullFace(GL_BACK);
+  drawBatch(b, nullptr, view);
+  glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_FALSE);
+}
+
+void drawSolid(const detail::Batch& b, const Eigen::Matrix4d& view) {
+  if (b.empty()) return;
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  drawBatch(b, nullptr, view);
+}
+
+void drawLines(const std::vector<LineMesh>& lines, const Eigen::Matrix4d& tile, const Prepared& pr, int& stencilRef) {
+  if (lines.empty()) return;
+  // Virtual-window coordinates -> virtual NDC, then the tile transform.
+  Eigen::Matrix4d w = Eigen::Matrix4d::Identity();
+  w(0, 0) = 2.0 / pr.Wv, w(0, 3) = -1;
+  w(1, 1) = 2.0 / pr.Hv, w(1, 3) = -1;
+  const Eigen::Matrix4d p = tile * w;
+  glMatrixMode(GL_PROJECTION);
+  glLoadMatrixd(p.data());
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glDisable(GL_LIGHTING);
+  glDisable(GL_CULL_FACE);
+  glDisableClientState(GL_NORMAL_ARRAY);
+  glDisableClientState(GL_COLOR_ARRAY);
+  // Each polyline touches a pixel at most once (overlapping quads and discs would otherwise blend
+  // twice where the line is transparent): the stencil holds the index of the last line drawn there.
+  glEnable(GL_STENCIL_TEST);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  for (const LineMesh& m : lines) {
+    if (stencilRef == 255) {
+      glClear(GL_STENCIL_BUFFER_BIT);
+      stencilRef = 0;
+    }
+    ++stencilRef;
+    glStencilFunc(GL_NOTEQUAL, stencilRef, 0xFF);
+    glColor4f(m.c.r, m.c.g, m.c.b, m.c.a);
+    glVertexPointer(3, GL_DOUBLE, 0, m.xyz.data());
+    glDrawElements(GL_TRIANGLES, GLsizei(m.idx.size()), GL_UNSIGNED_INT, m.idx.data());
+  }
+  glDisable(GL_STENCIL_TEST);
+  glEnableClientState(GL_NORMAL_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glEnable(GL_LIGHTING);
+  glMatrixMode(GL_PROJECTION);
+  glLoadMatrixd(Eigen::Matrix4d(tile * pr.proj).data());
+}
+
+void drawPass(const Prepared& pr, const Eigen::Matrix4d& tile, int tw, int th) {
+  const Color& bg = pr.scene->background;
+  glViewport(0, 0, tw, th);
+  glClearColor(bg.r, bg.g, bg.b, bg.a);
+  glClearDepth(1.0);
+  glClearStencil(0);
+  glDepthMask(GL_TRUE);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDisable(GL_BLEND);
+  glDisable(GL_DITHER);
+  glShadeModel(GL_SMOOTH);
+  glEnable(GL_NORMALIZE);
+
+  // Lights, fixed in eye space.
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  const float amb[4] = {ambient, ambient, ambient, 1}, zero[4] = {0, 0, 0, 1};
+  const float kd[4] = {keyDiffuse, keyDiffuse, keyDiffuse, 1}, ks[4] = {keySpecular, keySpecular, keySpecular, 1};
+  const float fd[4] = {fillDiffuse, fillDiffuse, fillDiffuse, 1}, white[4] = {1, 1, 1, 1};
+  glLightModelfv(GL_LIGHT_MODEL_AMBIENT, amb);
+  glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, GL_FALSE);
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);
+  glLightfv(GL_LIGHT0, GL_POSITION, keyDir);
+  glLightfv(GL_LIGHT0, GL_AMBIENT, zero);
+  glLightfv(GL_LIGHT0, GL_DIFFUSE, kd);
+  glLightfv(GL_LIGHT0, GL_SPECULAR, ks);
+  glEnable(GL_LIGHT1);
+  glLightfv(GL_LIGHT1, GL_POSITION, fillDir);
+  glLightfv(GL_LIGHT1, GL_AMBIENT, zero);
+  glLightfv(GL_LIGHT1, GL_DIFFUSE, fd);
+  glLightfv(GL_LIGHT1, GL_SPECULAR, zero);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, white);
+  glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, shininess);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_EMISSION, zero);
+  glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+  glEnable(GL_COLOR_MATERIAL);
+
+  glMatrixMode(GL_PROJECTION);
+  glLoadMatrixd(Eigen::Matrix4d(tile * pr.proj).data());
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_NORMAL_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+
+  int stencilRef = 0;
+  // Opaque: solids, surfaces, lines.
+  drawSolid(pr.solid, pr.view);
+  drawSurface(pr.surface, pr.surfaceBack, pr.view);
+  drawLines(pr.lines, tile, pr, stencilRef);
+  // Transparent, over everything opaque, without depth writes (no sorting).
+  glEnable(GL_BLEND);
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  glDepthMask(GL_FALSE);
+  drawSolid(pr.solidT, pr.view);
+  drawSurface(pr.surfaceT, pr.surfaceTBack, pr.view);
+  drawLines(pr.linesT, tile, pr, stencilRef);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glDisableClientState(GL_NORMAL_ARRAY);
+  glDisableClientState(GL_COLOR_ARRAY);
+}
+
+/// Maps the virtual image's NDC to the NDC of the tile [x0, x0+tw) x [y0, y0+th) (virtual pixels,
+/// y up), shifted by (jx, jy) virtual pixels so that each tile pixel samples the scene at its
+/// centre plus the jitter.
+Eigen::Matrix4d tileMatrix(const Prepared& pr, double x0, double y0, int tw, int th, double jx, double jy) {
+  Eigen::Matrix4d t = Eigen::Matrix4d::Identity();
+  t(0, 0) = double(pr.Wv) / tw;
+  t(0, 3) = (pr.Wv - 2 * (x0 + jx)) / tw - 1;
+  t(1, 1) = double(pr.Hv) / th;
+  t(1, 3) = (pr.Hv - 2 * (y0 + jy)) / th - 1;
+  return t;
+}
+
+void readPixels(std::vector<std::uint8_t>& out, int w, int h) {
+  out.resize(std::size_t(w) * h * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
+  if (const GLenum err = glGetError(); err != GL_NO_ERROR)
+    throw std::runtime_error("soma::render: OpenGL error 0x" + [err] {
+      char buf[16];
+      std::snprintf(buf, sizeof buf, "%04X", unsigned(err));
+      return std::string(buf);
+    }() + " while rendering");
+}
+
+// Rasterise all samples; returns the linear-light average per output pixel (r, g, b, alpha).
+std::vector<float> rasterise(const Prepared& pr) {
+  GlContext& gl = glContext();
+  const Srgb& enc = srgb();
+  std::vector<float> acc(std::size_t(pr.W) * pr.H * 4, 0.0f);
+  std::vector<std::uint8_t> px;
+  const int s = pr.samples;
+  if (pr.supersample) {
+    gl.bind(std::min(pr.Wv, 16), std::min(pr.Hv, 16));  // learn the limits
+    const int tileW = std::max(s, std::min({gl.maxWidth, maxTileSide, pr.Wv}) / s * s);
+    const int tileH = std::max(s, std::min({gl.maxHeight, maxTileSide, pr.Hv}) / s * s);
+    for (int ty0 = 0; ty0 < pr.Hv; ty0 += tileH)  // top-down tile origin
+      for (int tx0 = 0; tx0 < pr.Wv; tx0 += tileW) {
+        const int tw = std::min(tileW, pr.Wv - tx0), th = std::min(tileH, pr.Hv - ty0);
+        const int yb = pr.Hv - ty0 - th;  // bottom-up origin
+        gl.bind(tw, th);
+        drawPass(pr, tileMatrix(pr, tx0, yb, tw, th, 0, 0), tw, th);
+        readPixels(px, tw, th);
+        for (int j = 0; j < th; ++j) {
+          const int yv = ty0 + (th - 1 - j);  // top-down virtual row
+          float* row = acc.data() + std::size_t(yv / s) * pr.W * 4;
+          const std::uint8_t* src = px.data() + std::size_t(j) * tw * 4;
+          for (int i = 0; i < tw; ++i) {
+            float* a = row + std::size_t((tx0 + i) / s) * 4;
+            a[0] += enc.toLinear[src[4 * i]];
+            a[1] += enc.toLinear[src[4 * i + 1]];
+            a[2] += enc.toLinear[src[4 * i + 2]];
+            a[3] += src[4 * i + 3] * (1.0f / 255);
+          }
+        }
+      }
+  } else {
+    gl.bind(pr.W, pr.H);
+    for (int jy = 0; jy < s; ++jy)
+      for (int jx = 0; jx < s; ++jx) {
+        const double ox = (jx + 0.5) / s - 0.5, oy = (jy + 0.5) / s - 0.5;
+        drawPass(pr, tileMatrix(pr, 0, 0, pr.W, pr.H, ox, oy), pr.W, pr.H);
+        readPixels(px, pr.W, pr.H);
+        for (int j = 0; j < pr.H; ++j) {
+          float* row = acc.data() + std::size_t(pr.H - 1 - j) * pr.W * 4;
+          const std::uint8_t* src = px.data() + std::size_t(j) * pr.W * 4;
+          for (int i = 0; i < 4 * pr.W; i += 4) {
+            row[i] += enc.toLinear[src[i]];
+            row[i + 1] += enc.toLinear[src[i + 1]];
+            row[i + 2] += enc.toLinear[src[i + 2]];
+            row[i + 3] += src[i + 3] * (1.0f / 255);
+          }
+        }
+      }
+  }
+  const float inv = 1.0f / float(s * s);
+  for (float& v : acc) v *= inv;
+  return acc;
+}
+
+void validateOptions(const RenderOptions& o) {
+  if (o.width < 1 || o.height < 1 || o.width > maxImageSide || o.height > maxImageSide)
+    invalid("RenderOptions: image size " + std::to_string(o.width) + "x" + std::to_string(o.height) +
+            " is out of range; width and height must be in [1, " + std::to_string(maxImageSide) + "]");
+  if (o.samples < 1 || o.samples > maxSamples)
+    invalid("RenderOptions.samples is " + std::to_string(o.samples) + "; it must be in [1, " + std::to_string(maxSamples) + "]");
+  if (o.antiAliasing != AntiAliasing::Supersample && o.antiAliasing != AntiAliasing::Accumulate)
+    invalid("RenderOptions.antiAliasing has an unknown value");
+}
+
+bool hasText(const Scene& s) {
+  if (!s.title.empty() || s.axes) return true;
+  for (const Label& l : s.labels)
+    if (!l.text.empty()) return true;
+  return false;
+}
+
+}  // namespace
+
+Image render(const Scene& scene, const RenderOptions& options) {
+  validateOptions(options);
+  scene.validate();
+  Prepared pr;
+  pr.scene = &scene;
+  pr.cam = effectiveCamera(scene, options);
+  pr.W = options.width;
+  pr.H = options.height;
+  pr.samples = options.samples;
+  pr.supersample = options.antiAliasing == AntiAliasing::Supersample;
+  pr.vscale = pr.supersample ? pr.samples : 1;
+  pr.Wv = pr.W * int(pr.vscale);
+  pr.Hv = pr.H * int(pr.vscale);
+  pr.view = pr.cam.viewMatrix();
+  if (hasText(scene)) (void)fontPath();  // fail before any work when text cannot be drawn
+
+  std::lock_guard<std::mutex> lock(renderMutex());
+  depthRange(pr);
+  pr.proj = pr.cam.projectionMatrix(double(pr.W) / pr.H, pr.zNear, pr.zFar);
+  tessellate(pr);
+  prepareLines(pr);
+  prepareText(pr);
+
+  GlContext& gl = glContext();
+  struct Release {
+    GlContext& gl;
+    ~Release() { gl.release(); }
+  } release{gl};
+  const std::vector<float> acc = rasterise(pr);
+
+  Image img;
+  img.width = pr.W;
+  img.height = pr.H;
+  img.rgba.resize(acc.size());
+  const Srgb& enc = srgb();
+  for (std::size_t i = 0; i < acc.size(); i += 4) {
+    img.rgba[i] = enc.encode(acc[i]);
+    img.rgba[i + 1] = enc.encode(acc[i + 1]);
+    img.rgba[i + 2] = enc.encode(acc[i + 2]);
+    img.rgba[i + 3] = std::uint8_t(std::lround(std::clamp(acc[i + 3], 0.0f, 1.0f) * 255));
+  }
+  for (const Text& t : pr.texts) detail::drawText(img, t.text, t.x, t.y, t.style);
+  return img;
+}
+
+std::vector<std::uint8_t> renderRgba(const Scene& scene, const RenderOptions& options) {
+  return render(scene, options).rgba;
+}
+
+void renderPng(const Scene& scene, const RenderOptions& options, const std::filesystem::path& png) {
+  writePng(render(scene, options), png);
+}
+
+}  // namespace soma::render
