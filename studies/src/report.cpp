@@ -398,7 +398,7 @@ article.study.fail { border-color: #f0b4ae; border-left-color: var(--fail); back
 .error { background: var(--fail-bg); border: 1px solid #f0b4ae; color: var(--fail); padding: 6px 10px;
   margin: 8px 0; border-radius: 3px; font-size: 13.5px; white-space: pre-wrap; }
 table.checks { width: 100%; font-size: 13px; margin: 6px 0 4px; table-layout: fixed; }
-table.checks th { text-align: left; font: 600 11.5px "DejaVu Sans", Arial, sans-serif; color: var(--muted);
+table.checks th { text-align: left; white-space: nowrap; font: 600 11.5px "DejaVu Sans", Arial, sans-serif; color: var(--muted);
   text-transform: uppercase; letter-spacing: .04em; border-bottom: 1px solid var(--ink); padding: 4px 6px; }
 table.checks td { border-bottom: 1px solid #ece8de; padding: 5px 6px; vertical-align: top;
   overflow-wrap: anywhere; }
@@ -408,7 +408,7 @@ table.checks tr.fail td { background: var(--fail-bg); }
 table.checks tr.fail td.result { color: var(--fail); font-weight: 700; }
 table.checks td.result { color: var(--pass); font: 700 11px "DejaVu Sans", Arial, sans-serif; text-align: center; }
 table.checks col.c-idx { width: 30px; } table.checks col.c-name { width: 30%; }
-table.checks col.c-err { width: 72px; } table.checks col.c-tol { width: 72px; }
+table.checks col.c-err { width: 80px; } table.checks col.c-tol { width: 92px; }
 table.checks col.c-time { width: 70px; } table.checks col.c-res { width: 50px; }
 table.checks td.idx { color: var(--muted); text-align: right; }
 ul.notes { margin: 8px 0 4px; padding-left: 20px; font-size: 14px; }
