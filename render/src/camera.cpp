@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace soma::render {
 
@@ -116,11 +117,20 @@ Camera Camera::fit(const Scene& scene, const Eigen::Vector3d& viewDir, const Fit
   if (box.isEmpty()) box = Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-0.5), Eigen::Vector3d::Constant(0.5));
   if (box.diagonal().norm() == 0) box.extend(box.min() + Eigen::Vector3d::Constant(1)), box.extend(box.min() - Eigen::Vector3d::Constant(1));
   const Eigen::Vector3d centre = box.center();
-  std::array<Eigen::Vector3d, 8> corner;  // in the view basis (s, u, f), relative to the centre
-  for (int k = 0; k < 8; ++k) {
-    const Eigen::Vector3d c = box.corner(Eigen::AlignedBox3d::CornerType(k)) - centre;
-    corner[k] = {c.dot(s), c.dot(u), c.dot(f)};
+  // The outline of the geometry in the view basis (s, u, f), relative to the centre: tighter than
+  // the corners of the bounding box, which project well outside a diagonal view of the scene.
+  std::vector<Eigen::Vector3d> corner;
+  for (const Eigen::Vector3d& p : detail::outlinePoints(scene, s, u)) {
+    const Eigen::Vector3d c = p - centre;
+    corner.emplace_back(c.dot(s), c.dot(u), c.dot(f));
   }
+  double spread = 0;
+  for (const auto& c : corner) spread = std::max({spread, std::abs(c.x()), std::abs(c.y())});
+  if (!(spread > 1e-9 * box.diagonal().norm()))  // nothing, or a single point: frame the (enlarged) box
+    for (int k = 0; k < 8; ++k) {
+      const Eigen::Vector3d c = box.corner(Eigen::AlignedBox3d::CornerType(k)) - centre;
+      corner.emplace_back(c.dot(s), c.dot(u), c.dot(f));
+    }
   // The window available in normalised device coordinates: a margin all round, room for the title.
   const double titleFrac = scene.title.empty() ? 0.0 : (scene.titlePixelHeight * 1.8) / o.height;
   const double xlo = -1 + 2 * o.margin, xhi = 1 - 2 * o.margin;

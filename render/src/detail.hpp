@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace soma::render::detail {
 
@@ -29,5 +30,12 @@ inline double frameScale(const Frame& x, double L) { return x.scale > 0 ? x.scal
 inline double axesLength(const Scene& s, double L) { return s.axesLength > 0 ? s.axesLength : autosize::axesLength * L; }
 /// Shaft radius of a frame's arrows relative to its scale.
 inline constexpr double frameArrowRadius = 0.035;
+/// Shaft radius of the world axes' arrows relative to their length.
+inline constexpr double worldAxisRadius = 0.018;
+
+/// Points whose projections outline the drawn scene as seen along a view direction with screen
+/// axes s (right) and u (up): every defining point, and for round things (spheres, tubes, arrow
+/// heads) the points at +-radius along s and u. Used by Camera::fit to frame the geometry tightly.
+std::vector<Eigen::Vector3d> outlinePoints(const Scene& scene, const Eigen::Vector3d& s, const Eigen::Vector3d& u);
 
 }  // namespace soma::render::detail

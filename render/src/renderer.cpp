@@ -20,6 +20,8 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <chrono>
+#include <cstdlib>
 #include <mutex>
 #include <numbers>
 #include <stdexcept>
@@ -45,7 +47,7 @@ using detail::invalid;
 constexpr double pi = std::numbers::pi;
 constexpr int maxImageSide = 16384;
 constexpr int maxSamples = 16;
-constexpr int maxTileSide = 4096;  // bounds the memory of one supersampled pass (colour + depth)
+constexpr int maxTileSide = 2048;  // the OSMesa buffer: 2048^2 x (4 colour + 4 depth/stencil) bytes, kept
 
 std::mutex& renderMutex() {
   static std::mutex m;
@@ -73,33 +75,38 @@ const Srgb& srgb() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The OSMesa context: created on first use, kept for the life of the process (deliberately not
-// destroyed at exit: Mesa's own teardown order is not ours to rely on). Used under renderMutex().
+// The OSMesa context and its colour buffer: created on first use at a fixed tile size and kept for
+// the life of the process, so that later renders pay neither context creation nor reallocation of
+// Mesa's colour and depth buffers (deliberately not destroyed at exit: Mesa's own teardown order is
+// not ours to rely on). Used only under renderMutex(). Images larger than a tile are drawn tile by tile.
 struct GlContext {
   OSMesaContext ctx = nullptr;
-  std::vector<std::uint8_t> buffer;  // OSMesa's colour buffer (we read back with glReadPixels)
-  int maxWidth = 0, maxHeight = 0;
+  std::vector<std::uint8_t> buffer;  // OSMesa's colour buffer, rows bottom-up, filled by glFinish
+  int side = 0;                      // the buffer is side x side pixels
 
-  void bind(int w, int h) {
+  void bind() {
     if (!ctx) {
       ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);
       if (!ctx) throw std::runtime_error("soma::render: OSMesaCreateContextExt failed (is libOSMesa's llvmpipe usable?)");
     }
-    buffer.resize(std::size_t(w) * h * 4);
-    if (!OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, w, h))
-      throw std::runtime_error("soma::render: OSMesaMakeCurrent failed for a " + std::to_string(w) + "x" +
-                               std::to_string(h) + " buffer");
-    if (maxWidth == 0) {
-      GLint v = 0;
-      OSMesaGetIntegerv(OSMESA_MAX_WIDTH, &v);
-      maxWidth = v > 0 ? v : 2048;
-      OSMesaGetIntegerv(OSMESA_MAX_HEIGHT, &v);
-      maxHeight = v > 0 ? v : 2048;
-      GLint dims[2] = {0, 0};
+    if (side == 0) {
+      // Learn the limits on a small buffer, then settle on the tile size.
+      buffer.resize(16 * 16 * 4);
+      if (!OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, 16, 16))
+        throw std::runtime_error("soma::render: OSMesaMakeCurrent failed");
+      GLint w = 0, h = 0, dims[2] = {0, 0};
+      OSMesaGetIntegerv(OSMESA_MAX_WIDTH, &w);
+      OSMesaGetIntegerv(OSMESA_MAX_HEIGHT, &h);
       glGetIntegerv(GL_MAX_VIEWPORT_DIMS, dims);
-      if (dims[0] > 0) maxWidth = std::min(maxWidth, int(dims[0]));
-      if (dims[1] > 0) maxHeight = std::min(maxHeight, int(dims[1]));
+      int m = maxTileSide;
+      for (GLint v : {w, h, dims[0], dims[1]})
+        if (v > 0) m = std::min(m, int(v));
+      side = std::max(m, 64);
+      buffer.assign(std::size_t(side) * side * 4, 0);
     }
+    if (!OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, side, side))
+      throw std::runtime_error("soma::render: OSMesaMakeCurrent failed for a " + std::to_string(side) + "x" +
+                               std::to_string(side) + " buffer");
   }
   // Leave no context current on this thread: the next render may come from another thread.
   void release() { OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0); }
@@ -114,9 +121,9 @@ GlContext& glContext() {
 // viewer, a weak fill from the right, a global ambient term, a modest white highlight. Documented
 // in render/README.md; tests/render checks the centre of a sphere against it.
 constexpr float ambient = 0.30f;
-constexpr float keyDiffuse = 0.65f, keySpecular = 0.25f, fillDiffuse = 0.20f, shininess = 48.0f;
-constexpr float keyDir[4] = {-0.35f, 0.55f, 1.0f, 0.0f};
-constexpr float fillDir[4] = {0.60f, -0.25f, 0.60f, 0.0f};
+constexpr float keyDiffuse = 0.60f, keySpecular = 0.15f, fillDiffuse = 0.20f, shininess = 40.0f;
+constexpr float keyDir[4] = {-0.25f, 0.35f, 1.0f, 0.0f};
+constexpr float fillDir[4] = {0.50f, -0.40f, 0.50f, 0.0f};
 /// Back faces of two-sided surfaces get this tint towards white, so inside and outside differ.
 constexpr float backTint = 0.35f;
 
@@ -165,7 +172,14 @@ std::vector<float> backColours(const std::vector<float>& col) {
   return out;
 }
 
-// Near and far planes enclosing the scene's bounding box.
+// Depth bias of a line of half width hwOut output pixels (see lineBias): the relative shrink of its
+// depth under perspective, its shift towards the eye in world units under orthographic projection.
+double lineShrink(const Prepared& pr, double hwOut) {
+  return std::min(0.1, lineBias * (hwOut + 1) * 2 * std::tan(pr.cam.fovYDegrees * pi / 360) / pr.H);
+}
+double lineShift(const Prepared& pr, double hwOut) { return lineBias * (hwOut + 1) * pr.cam.orthoHeight / pr.H; }
+
+// Near and far planes enclosing the scene's bounding box, and its polylines moved towards the eye.
 void depthRange(Prepared& pr) {
   Eigen::AlignedBox3d box = pr.scene->bounds();
   if (box.isEmpty()) box = Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-0.5), Eigen::Vector3d::Constant(0.5));
@@ -175,16 +189,18 @@ void depthRange(Prepared& pr) {
     const double d = pr.cam.depth(box.corner(Eigen::AlignedBox3d::CornerType(k)));
     dmin = std::min(dmin, d), dmax = std::max(dmax, d);
   }
+  double hw = 0;
+  for (const Polyline& p : pr.scene->polylines) hw = std::max(hw, p.width / 2);
   if (pr.cam.orthographic) {
     const double pad = 0.05 * ext + 0.05 * (dmax - dmin);
-    pr.zNear = dmin - pad;
+    pr.zNear = dmin - pad - (pr.scene->polylines.empty() ? 0.0 : lineShift(pr, hw));
     pr.zFar = dmax + pad;
   } else if (dmax <= 0) {  // everything behind the eye: nothing is visible
     pr.zNear = 1e-3 * ext;
     pr.zFar = ext;
   } else {
     pr.zFar = dmax * 1.02;
-    pr.zNear = std::max(0.8 * dmin, pr.zFar * 1e-5);
+    pr.zNear = std::max(0.8 * dmin * (1 - lineShrink(pr, hw)), pr.zFar * 1e-5);
   }
 }
 
@@ -226,7 +242,7 @@ void tessellate(Prepared& pr) {
   if (s.axes) {
     const double len = detail::axesLength(s, L);
     for (int k = 0; k < 3; ++k)
-      detail::addArrow(pr.solid, Eigen::Vector3d::Zero(), len * Eigen::Vector3d::Unit(k), 0.018 * len, axis[k], ppu);
+      detail::addArrow(pr.solid, Eigen::Vector3d::Zero(), len * Eigen::Vector3d::Unit(k), detail::worldAxisRadius * len, axis[k], ppu);
   }
   pr.surfaceBack = backColours(pr.surface.col);
   pr.surfaceTBack = backColours(pr.surfaceT.col);
@@ -274,9 +290,7 @@ LineMesh polylineMesh(const Prepared& pr, const Polyline& pl) {
   const double hwOut = pl.width / 2;               // output pixels
   const double hw = hwOut * pr.vscale;              // virtual pixels
   // Depth bias towards the eye (see lineBias).
-  const double tanHalf = std::tan(pr.cam.fovYDegrees * pi / 360);
-  const double shrink = std::min(0.1, lineBias * (hwOut + 1) * 2 * tanHalf / pr.H);  // perspective: relative
-  const double shift = lineBias * (hwOut + 1) * pr.cam.orthoHeight / pr.H;           // orthographic: absolute
+  const double shrink = lineShrink(pr, hwOut), shift = lineShift(pr, hwOut);
   std::vector<Eigen::Vector4d> e;
   e.reserve(pl.p.size() + 1);
   for (const auto& p : pl.p) {
@@ -568,68 +582,56 @@ Eigen::Matrix4d tileMatrix(const Prepared& pr, double x0, double y0, int tw, int
   return t;
 }
 
-void readPixels(std::vector<std::uint8_t>& out, int w, int h) {
-  out.resize(std::size_t(w) * h * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
-  if (const GLenum err = glGetError(); err != GL_NO_ERROR)
-    throw std::runtime_error("soma::render: OpenGL error 0x" + [err] {
-      char buf[16];
-      std::snprintf(buf, sizeof buf, "%04X", unsigned(err));
-      return std::string(buf);
-    }() + " while rendering");
+void checkGlError() {
+  if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "%04X", unsigned(err));
+    throw std::runtime_error(std::string("soma::render: OpenGL error 0x") + buf + " while rendering");
+  }
 }
 
 // Rasterise all samples; returns the linear-light average per output pixel (r, g, b, alpha).
+// The virtual image (Wv x Hv) is cut into tiles whose sides are multiples of vscale; each tile is
+// drawn once (Supersample) or samples^2 times with sub-pixel jitter (Accumulate), and every virtual
+// pixel adds its linear value to the output pixel it lies in.
 std::vector<float> rasterise(const Prepared& pr) {
   GlContext& gl = glContext();
+  gl.bind();
   const Srgb& enc = srgb();
   std::vector<float> acc(std::size_t(pr.W) * pr.H * 4, 0.0f);
-  std::vector<std::uint8_t> px;
-  const int s = pr.samples;
-  if (pr.supersample) {
-    gl.bind(std::min(pr.Wv, 16), std::min(pr.Hv, 16));  // learn the limits
-    const int tileW = std::max(s, std::min({gl.maxWidth, maxTileSide, pr.Wv}) / s * s);
-    const int tileH = std::max(s, std::min({gl.maxHeight, maxTileSide, pr.Hv}) / s * s);
-    for (int ty0 = 0; ty0 < pr.Hv; ty0 += tileH)  // top-down tile origin
-      for (int tx0 = 0; tx0 < pr.Wv; tx0 += tileW) {
-        const int tw = std::min(tileW, pr.Wv - tx0), th = std::min(tileH, pr.Hv - ty0);
-        const int yb = pr.Hv - ty0 - th;  // bottom-up origin
-        gl.bind(tw, th);
-        drawPass(pr, tileMatrix(pr, tx0, yb, tw, th, 0, 0), tw, th);
-        readPixels(px, tw, th);
-        for (int j = 0; j < th; ++j) {
-          const int yv = ty0 + (th - 1 - j);  // top-down virtual row
-          float* row = acc.data() + std::size_t(yv / s) * pr.W * 4;
-          const std::uint8_t* src = px.data() + std::size_t(j) * tw * 4;
-          for (int i = 0; i < tw; ++i) {
-            float* a = row + std::size_t((tx0 + i) / s) * 4;
-            a[0] += enc.toLinear[src[4 * i]];
-            a[1] += enc.toLinear[src[4 * i + 1]];
-            a[2] += enc.toLinear[src[4 * i + 2]];
-            a[3] += src[4 * i + 3] * (1.0f / 255);
-          }
-        }
-      }
-  } else {
-    gl.bind(pr.W, pr.H);
+  const int vs = int(pr.vscale), s = pr.samples;
+  const int tile = std::max(vs, gl.side / vs * vs);
+  std::vector<Eigen::Vector2d> jitter;
+  if (pr.supersample) jitter.emplace_back(0, 0);
+  else
     for (int jy = 0; jy < s; ++jy)
-      for (int jx = 0; jx < s; ++jx) {
-        const double ox = (jx + 0.5) / s - 0.5, oy = (jy + 0.5) / s - 0.5;
-        drawPass(pr, tileMatrix(pr, 0, 0, pr.W, pr.H, ox, oy), pr.W, pr.H);
-        readPixels(px, pr.W, pr.H);
-        for (int j = 0; j < pr.H; ++j) {
-          float* row = acc.data() + std::size_t(pr.H - 1 - j) * pr.W * 4;
-          const std::uint8_t* src = px.data() + std::size_t(j) * pr.W * 4;
-          for (int i = 0; i < 4 * pr.W; i += 4) {
-            row[i] += enc.toLinear[src[i]];
-            row[i + 1] += enc.toLinear[src[i + 1]];
-            row[i + 2] += enc.toLinear[src[i + 2]];
-            row[i + 3] += src[i + 3] * (1.0f / 255);
+      for (int jx = 0; jx < s; ++jx) jitter.emplace_back((jx + 0.5) / s - 0.5, (jy + 0.5) / s - 0.5);
+  glEnable(GL_SCISSOR_TEST);  // clears stay inside the tile
+  for (int ty0 = 0; ty0 < pr.Hv; ty0 += tile)  // top-down tile origin
+    for (int tx0 = 0; tx0 < pr.Wv; tx0 += tile) {
+      const int tw = std::min(tile, pr.Wv - tx0), th = std::min(tile, pr.Hv - ty0);
+      const int yb = pr.Hv - ty0 - th;  // bottom-up origin
+      glScissor(0, 0, tw, th);
+      for (const auto& j : jitter) {
+        drawPass(pr, tileMatrix(pr, tx0, yb, tw, th, j.x(), j.y()), tw, th);
+        glFinish();  // also copies the result into gl.buffer (OSMesa, rows bottom-up)
+        checkGlError();
+        for (int r = 0; r < th; ++r) {
+          const int yv = ty0 + (th - 1 - r);  // top-down virtual row
+          float* row = acc.data() + std::size_t(yv / vs) * pr.W * 4;
+          const std::uint8_t* src = gl.buffer.data() + std::size_t(r) * gl.side * 4;
+          for (int i = 0; i < tw; ++i) {
+            float* a = row + std::size_t((tx0 + i) / vs) * 4;
+            const std::uint8_t* p = src + 4 * i;
+            a[0] += enc.toLinear[p[0]];
+            a[1] += enc.toLinear[p[1]];
+            a[2] += enc.toLinear[p[2]];
+            a[3] += p[3] * (1.0f / 255);
           }
         }
       }
-  }
+    }
+  glDisable(GL_SCISSOR_TEST);
   const float inv = 1.0f / float(s * s);
   for (float& v : acc) v *= inv;
   return acc;
@@ -682,7 +684,10 @@ Image render(const Scene& scene, const RenderOptions& options) {
     GlContext& gl;
     ~Release() { gl.release(); }
   } release{gl};
+  auto P0 = std::chrono::steady_clock::now();
   const std::vector<float> acc = rasterise(pr);
+  auto P1 = std::chrono::steady_clock::now();
+  if (std::getenv("SOMA_RENDER_PROFILE")) std::fprintf(stderr, "rasterise total %.1f ms; tris %zu %zu lines %zu\n", std::chrono::duration<double, std::milli>(P1-P0).count(), pr.solid.idx.size()/3, pr.surface.idx.size()/3, pr.lines.size());
 
   Image img;
   img.width = pr.W;

@@ -65,6 +65,40 @@ Eigen::AlignedBox3d Scene::bounds() const {
   return b;
 }
 
+std::vector<Eigen::Vector3d> detail::outlinePoints(const Scene& sc, const Eigen::Vector3d& s, const Eigen::Vector3d& u) {
+  std::vector<Eigen::Vector3d> out;
+  const double L = sc.characteristicLength();
+  auto ball = [&](const Eigen::Vector3d& c, double r) {
+    out.push_back(c);
+    for (const Eigen::Vector3d& d : {s, u}) {
+      out.push_back(c + r * d);
+      out.push_back(c - r * d);
+    }
+  };
+  for (const auto& x : sc.points) for (const auto& p : x.p) ball(p, detail::pointRadius(x, L));
+  for (const auto& x : sc.polylines) for (const auto& p : x.p) out.push_back(p);
+  for (const auto& x : sc.tubes) for (const auto& p : x.p) ball(p, detail::tubeRadius(x, L));
+  for (const auto& x : sc.meshes) for (const auto& p : x.v) out.push_back(p);
+  for (const auto& x : sc.frames) {
+    const double f = detail::frameScale(x, L);
+    const Eigen::Vector3d o = x.pose.block<3, 1>(0, 3);
+    ball(o, 1.6 * detail::frameArrowRadius * f);
+    for (int k = 0; k < 3; ++k) ball(o + f * x.pose.block<3, 1>(0, k), 2.6 * detail::frameArrowRadius * f);
+  }
+  for (const auto& x : sc.arrows) {
+    const double r = detail::arrowRadius(x, L);
+    ball(x.from, r);
+    ball(x.to, 2.6 * r);
+  }
+  for (const auto& x : sc.labels) out.push_back(x.at);
+  if (sc.axes) {
+    const double a = detail::axesLength(sc, L);
+    out.push_back(Eigen::Vector3d::Zero());
+    for (int k = 0; k < 3; ++k) ball(a * Eigen::Vector3d::Unit(k), 2.6 * detail::worldAxisRadius * a);
+  }
+  return out;
+}
+
 namespace {
 using detail::invalid;
 void checkColor(const Color& c, const std::string& who) {

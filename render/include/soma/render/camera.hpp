@@ -31,7 +31,7 @@ struct Camera {
   /// Orthographic camera at eye looking at target, showing a window `height` world units tall.
   static Camera ortho(const Eigen::Vector3d& eye, const Eigen::Vector3d& target,
                       const Eigen::Vector3d& up, double height);
-  /// A camera looking along viewDir that frames the whole scene (its bounds) with a margin, leaving
+  /// A camera looking along viewDir that frames the whole scene (the outline of its geometry) with a margin, leaving
   /// room at the top for the scene's title. An empty scene is framed as the unit cube at the origin.
   static Camera fit(const Scene& scene, const Eigen::Vector3d& viewDir, const FitOptions& options = {});
 
