@@ -238,7 +238,13 @@ inline double kdlTol(double scale) { return toDouble(Tolerance<double>::identity
 
 /// Records what the table needs to say how the numbers were made.
 inline void addContext() {
-  benchmark::AddCustomContext("soma_compiler", std::string("GCC-compatible ") + __VERSION__);
+#if defined(__clang__)
+  benchmark::AddCustomContext("soma_compiler", std::string("clang ") + __clang_version__);
+#elif defined(__GNUC__)
+  benchmark::AddCustomContext("soma_compiler", std::string("GCC ") + __VERSION__);
+#else
+  benchmark::AddCustomContext("soma_compiler", "unknown");
+#endif
   benchmark::AddCustomContext("soma_cxx_flags", SOMA_BENCH_CXX_FLAGS);
   benchmark::AddCustomContext("soma_mpfr_bits", std::to_string(mpfrBits()));
   benchmark::AddCustomContext("soma_seed", std::to_string(kSeed));
