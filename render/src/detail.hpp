@@ -2,6 +2,7 @@
 // Internal helpers shared by the render sources (not installed, not public API).
 #include "soma/render/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -30,8 +31,9 @@ inline double frameScale(const Frame& x, double L) { return x.scale > 0 ? x.scal
 inline double axesLength(const Scene& s, double L) { return s.axesLength > 0 ? s.axesLength : autosize::axesLength * L; }
 /// Shaft radius of a frame's arrows relative to its scale.
 inline constexpr double frameArrowRadius = 0.035;
-/// Shaft radius of the world axes' arrows relative to their length.
-inline constexpr double worldAxisRadius = 0.018;
+/// Shaft radius of the world axes' arrows: thin (a fraction of the scene's size L), and never
+/// more than a fraction of their length a.
+inline double worldAxisRadius(double a, double L) { return std::min(0.018 * a, 0.0035 * L); }
 
 /// Points whose projections outline the drawn scene as seen along a view direction with screen
 /// axes s (right) and u (up): every defining point, and for round things (spheres, tubes, arrow

@@ -20,8 +20,6 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <chrono>
-#include <cstdlib>
 #include <mutex>
 #include <numbers>
 #include <stdexcept>
@@ -118,12 +116,13 @@ GlContext& glContext() {
 
 // ---------------------------------------------------------------------------------------------
 // Lighting (eye space; the camera looks down -z): a key light from the upper left behind the
-// viewer, a weak fill from the right, a global ambient term, a modest white highlight. Documented
+// viewer, a fill from the lower right (so that faces turned down are not black), a global ambient
+// term, a modest white highlight. Documented
 // in render/README.md; tests/render checks the centre of a sphere against it.
-constexpr float ambient = 0.30f;
-constexpr float keyDiffuse = 0.60f, keySpecular = 0.15f, fillDiffuse = 0.20f, shininess = 40.0f;
+constexpr float ambient = 0.32f;
+constexpr float keyDiffuse = 0.55f, keySpecular = 0.15f, fillDiffuse = 0.30f, shininess = 40.0f;
 constexpr float keyDir[4] = {-0.25f, 0.35f, 1.0f, 0.0f};
-constexpr float fillDir[4] = {0.50f, -0.40f, 0.50f, 0.0f};
+constexpr float fillDir[4] = {0.40f, -0.60f, 0.60f, 0.0f};
 /// Back faces of two-sided surfaces get this tint towards white, so inside and outside differ.
 constexpr float backTint = 0.35f;
 
@@ -242,7 +241,7 @@ void tessellate(Prepared& pr) {
   if (s.axes) {
     const double len = detail::axesLength(s, L);
     for (int k = 0; k < 3; ++k)
-      detail::addArrow(pr.solid, Eigen::Vector3d::Zero(), len * Eigen::Vector3d::Unit(k), detail::worldAxisRadius * len, axis[k], ppu);
+      detail::addArrow(pr.solid, Eigen::Vector3d::Zero(), len * Eigen::Vector3d::Unit(k), detail::worldAxisRadius(len, L), axis[k], ppu);
   }
   pr.surfaceBack = backColours(pr.surface.col);
   pr.surfaceTBack = backColours(pr.surfaceT.col);
@@ -684,10 +683,7 @@ Image render(const Scene& scene, const RenderOptions& options) {
     GlContext& gl;
     ~Release() { gl.release(); }
   } release{gl};
-  auto P0 = std::chrono::steady_clock::now();
   const std::vector<float> acc = rasterise(pr);
-  auto P1 = std::chrono::steady_clock::now();
-  if (std::getenv("SOMA_RENDER_PROFILE")) std::fprintf(stderr, "rasterise total %.1f ms; tris %zu %zu lines %zu\n", std::chrono::duration<double, std::milli>(P1-P0).count(), pr.solid.idx.size()/3, pr.surface.idx.size()/3, pr.lines.size());
 
   Image img;
   img.width = pr.W;

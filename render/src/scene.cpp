@@ -94,7 +94,7 @@ std::vector<Eigen::Vector3d> detail::outlinePoints(const Scene& sc, const Eigen:
   if (sc.axes) {
     const double a = detail::axesLength(sc, L);
     out.push_back(Eigen::Vector3d::Zero());
-    for (int k = 0; k < 3; ++k) ball(a * Eigen::Vector3d::Unit(k), 2.6 * detail::worldAxisRadius * a);
+    for (int k = 0; k < 3; ++k) ball(a * Eigen::Vector3d::Unit(k), 2.6 * detail::worldAxisRadius(a, L));
   }
   return out;
 }

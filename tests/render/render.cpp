@@ -61,9 +61,9 @@ Mesh square(double half, const Eigen::Vector3d& centre, Color c, double angle = 
 /// at the viewer: colour * (ambient + key diffuse n.L0 + fill diffuse n.L1) + key specular (n.H0)^shininess.
 std::array<double, 3> litFacingViewer(const Color& c) {
   const Eigen::Vector3d n(0, 0, 1), L0 = Eigen::Vector3d(-0.25, 0.35, 1).normalized(),
-                        L1 = Eigen::Vector3d(0.5, -0.4, 0.5).normalized();
+                        L1 = Eigen::Vector3d(0.4, -0.6, 0.6).normalized();
   const Eigen::Vector3d H0 = (L0 + Eigen::Vector3d::UnitZ()).normalized();
-  const double diffuse = 0.30 + 0.60 * n.dot(L0) + 0.20 * n.dot(L1);
+  const double diffuse = 0.32 + 0.55 * n.dot(L0) + 0.30 * n.dot(L1);
   const double spec = 0.15 * std::pow(n.dot(H0), 40.0);
   return {c.r * diffuse + spec, c.g * diffuse + spec, c.b * diffuse + spec};
 }
