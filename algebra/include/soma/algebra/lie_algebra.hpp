@@ -59,12 +59,12 @@ Eigen::Matrix<typename Tangent::Scalar, Tangent::DoF, Tangent::DoF> dexpSeries(
   using S = typename Tangent::Scalar;
   using M = Eigen::Matrix<S, Tangent::DoF, Tangent::DoF>;
   const M a = body ? M(-x.ad()) : M(x.ad());
-  M power = M::Identity(), sum = M::Zero();
-  S factorial(1);
-  for (int k = 0; k < terms; ++k) {
-    factorial *= S(k + 1);  // (k+1)!
-    sum += power / factorial;
-    power = power * a;
+  // term_k = ad^k/(k+1)!, updated as term_k = term_{k−1}·ad/(k+1): no separate factorial, which
+  // overflows float at (35)! and turned the sum into NaN.
+  M term = M::Identity(), sum = M::Identity();
+  for (int k = 1; k < terms; ++k) {
+    term = (term * a / S(k + 1)).eval();
+    sum += term;
   }
   return sum;
 }

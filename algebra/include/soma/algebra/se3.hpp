@@ -21,7 +21,10 @@ template <class S> class SE3Tangent {
 
   SE3Tangent() : s_(Vec6<S>::Zero()) {}
   explicit SE3Tangent(const Vec6<S>& s) : s_(s) {}
-  SE3Tangent(const Vec3<S>& w, const Vec3<S>& v) { s_ << w, v; }
+  SE3Tangent(const Vec3<S>& w, const Vec3<S>& v) {
+    s_.template head<3>() = w;
+    s_.template tail<3>() = v;
+  }
   static SE3Tangent Zero() { return SE3Tangent(); }
 
   const Vec6<S>& coeffs() const { return s_; }
@@ -75,7 +78,10 @@ template <class S> class SE3 {
   using Transformation = Mat4<S>;
 
   SE3() : r_(), t_(Vec3<S>::Zero()) {}
-  SE3(const SO3<S>& r, const Vec3<S>& t) : r_(r), t_(t) {}
+  /// From a rotation and a translation; throws InvalidInput when t has a NaN or infinity.
+  SE3(const SO3<S>& r, const Vec3<S>& t) : r_(r), t_(t) {
+    if (!allFinite(t_)) throw InvalidInput("SE3: translation has a NaN or infinite component");
+  }
   static SE3 Identity() { return SE3(); }
   /// From a 4×4 homogeneous matrix: rotation block validated as in SO3::fromMatrix, last row
   /// (0, 0, 0, 1) within Tolerance::input(), finite translation. Throws InvalidInput.
@@ -180,6 +186,8 @@ template <class S> Mat4<S> SE3Tangent<S>::hat() const {
 }
 
 template <class S> SE3<S> SE3Tangent<S>::exp(Mat6<S>* J_out) const {
+  if (!allFinite(s_))
+    throw InvalidInput("se(3) exp: twist (ω, v) has a NaN or infinite component");
   const SO3Tangent<S> w(ang());
   if (J_out) *J_out = rjac();
   return SE3<S>(w.exp(), w.ljac() * lin());

@@ -195,6 +195,7 @@ template <class S> SO3<S> SO3Tangent<S>::exp(Mat3<S>* J_out) const {
   using std::cos;
   using std::sin;
   using std::sqrt;
+  if (!allFinite(w_)) throw InvalidInput("so(3) exp: tangent ω has a NaN or infinite component");
   const S theta2 = w_.squaredNorm();
   const S theta = sqrt(theta2);
   // sin(θ/2)/θ: Taylor 1/2 − θ²/48 below precision(3) (remainder θ⁴/3840 < eps).
