@@ -361,3 +361,20 @@ TEST_CASE("render: bad input throws with a clear message", "[render]") {
   }
   CHECK_NOTHROW(render(Scene{}, o));  // an empty scene is a background
 }
+
+TEST_CASE("render: a polyline through the eye plane is clipped at the near plane", "[render]") {
+  // Looking along +x from the origin; the line runs from behind the eye to in front of it, 0.2 below.
+  const Camera cam = Camera::lookAt({0, 0, 0}, {1, 0, 0}, Eigen::Vector3d::UnitZ(), 60);
+  Scene s;
+  s.add(Polyline{{{-1, 0, -0.2}, {3, 0, -0.2}}, palette::black, 3});
+  s.add(Points{{Eigen::Vector3d(3, 0.5, 0.5)}, palette::blue, 0.05});  // something in front
+  const int w = 120, h = 90;
+  const Image img = render(s, small(cam, w, h, 2));
+  const Eigen::Vector2d far = cam.project({3, 0, -0.2}, w, h), mid = cam.project({1, 0, -0.2}, w, h);
+  CHECK(std::abs(far.x() - w / 2.0) < 1e-9);  // straight below the centre
+  CHECK(px(img, int(mid.x()), int(mid.y()))[0] < 60);  // the visible part is drawn
+  CHECK(px(img, int(far.x()), int(far.y()) + 3)[0] < 60);
+  // Above the line's vanishing point nothing of it appears (a wrongly projected point behind the
+  // eye would land there, mirrored).
+  for (int y = 0; y < int(far.y()) - 3; ++y) CHECK(px(img, w / 2, y)[0] == 255);
+}

@@ -72,7 +72,7 @@ struct Label {
   Eigen::Vector3d at = Eigen::Vector3d::Zero();
   std::string text;
   Color c = palette::black;
-  double pixelHeight = 20;  ///< nominal font size in output pixels (em height)
+  double pixelHeight = 22;  ///< nominal font size in output pixels (em height)
   Eigen::Vector2d offset{6, -6};
   HAlign hAlign = HAlign::Left;
   VAlign vAlign = VAlign::Bottom;

@@ -18,7 +18,7 @@ struct Scene {
 
   Color background = palette::white;
   std::string title;           ///< drawn centred at the top of the image when not empty
-  double titlePixelHeight = 26;
+  double titlePixelHeight = 28;
   bool axes = false;           ///< draw labelled world axes x, y, z at the origin
   double axesLength = 0;       ///< world units; 0 = automatic
 
