@@ -53,18 +53,22 @@ std::mutex& renderMutex() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// sRGB <-> linear light (IEC 61966-2-1), 8-bit codes.
+// sRGB <-> linear light (IEC 61966-2-1) for 8-bit codes. Linear values are 16-bit integers
+// (0..65535), so that the samples of a pixel are summed exactly in integers; the 65536-entry table
+// `code` maps a linear value back to the nearest code (nearest in the encoded scale), and is the
+// exact inverse of `linear` on the 256 codes.
 struct Srgb {
-  std::array<float, 256> toLinear{};
-  std::array<float, 255> threshold{};  ///< linear value of the encoded midpoint between codes k, k+1
-  Srgb() {
+  std::array<std::uint16_t, 256> linear{};
+  std::vector<std::uint8_t> code;
+  Srgb() : code(65536) {
     auto decode = [](double u) { return u <= 0.04045 ? u / 12.92 : std::pow((u + 0.055) / 1.055, 2.4); };
-    for (int k = 0; k < 256; ++k) toLinear[k] = float(decode(k / 255.0));
-    for (int k = 0; k < 255; ++k) threshold[k] = float(decode((k + 0.5) / 255.0));
-  }
-  /// The code whose encoded value is nearest: exact inverse of toLinear on the 256 codes.
-  std::uint8_t encode(float linear) const {
-    return std::uint8_t(std::upper_bound(threshold.begin(), threshold.end(), linear) - threshold.begin());
+    for (int k = 0; k < 256; ++k) linear[k] = std::uint16_t(std::lround(decode(k / 255.0) * 65535));
+    int k = 0;
+    for (int v = 0; v < 65536; ++v) {
+      // Advance past the midpoint (in the encoded scale) between codes k and k+1.
+      while (k < 255 && v >= decode((k + 0.5) / 255.0) * 65535) ++k;
+      code[v] = std::uint8_t(k);
+    }
   }
 };
 const Srgb& srgb() {
@@ -589,15 +593,16 @@ void checkGlError() {
   }
 }
 
-// Rasterise all samples; returns the linear-light average per output pixel (r, g, b, alpha).
+// Rasterise all samples; returns per output pixel the sums of the samples' linear-light values
+// (16-bit, see Srgb) of r, g, b and of alpha (scaled to 0..65535).
 // The virtual image (Wv x Hv) is cut into tiles whose sides are multiples of vscale; each tile is
 // drawn once (Supersample) or samples^2 times with sub-pixel jitter (Accumulate), and every virtual
-// pixel adds its linear value to the output pixel it lies in.
-std::vector<float> rasterise(const Prepared& pr) {
+// pixel adds its value to the output pixel it lies in.
+std::vector<std::uint32_t> rasterise(const Prepared& pr) {
   GlContext& gl = glContext();
   gl.bind();
-  const Srgb& enc = srgb();
-  std::vector<float> acc(std::size_t(pr.W) * pr.H * 4, 0.0f);
+  const auto& lin = srgb().linear;
+  std::vector<std::uint32_t> acc(std::size_t(pr.W) * pr.H * 4, 0);
   const int vs = int(pr.vscale), s = pr.samples;
   const int tile = std::max(vs, gl.side / vs * vs);
   std::vector<Eigen::Vector2d> jitter;
@@ -617,22 +622,19 @@ std::vector<float> rasterise(const Prepared& pr) {
         checkGlError();
         for (int r = 0; r < th; ++r) {
           const int yv = ty0 + (th - 1 - r);  // top-down virtual row
-          float* row = acc.data() + std::size_t(yv / vs) * pr.W * 4;
-          const std::uint8_t* src = gl.buffer.data() + std::size_t(r) * gl.side * 4;
-          for (int i = 0; i < tw; ++i) {
-            float* a = row + std::size_t((tx0 + i) / vs) * 4;
-            const std::uint8_t* p = src + 4 * i;
-            a[0] += enc.toLinear[p[0]];
-            a[1] += enc.toLinear[p[1]];
-            a[2] += enc.toLinear[p[2]];
-            a[3] += p[3] * (1.0f / 255);
-          }
+          std::uint32_t* a = acc.data() + (std::size_t(yv / vs) * pr.W + tx0 / vs) * 4;
+          const std::uint8_t* p = gl.buffer.data() + std::size_t(r) * gl.side * 4;
+          for (int i = 0; i < tw; i += vs, a += 4)  // output pixel by output pixel
+            for (int k = 0; k < vs; ++k, p += 4) {
+              a[0] += lin[p[0]];
+              a[1] += lin[p[1]];
+              a[2] += lin[p[2]];
+              a[3] += 257u * p[3];
+            }
         }
       }
     }
   glDisable(GL_SCISSOR_TEST);
-  const float inv = 1.0f / float(s * s);
-  for (float& v : acc) v *= inv;
   return acc;
 }
 
@@ -683,18 +685,19 @@ Image render(const Scene& scene, const RenderOptions& options) {
     GlContext& gl;
     ~Release() { gl.release(); }
   } release{gl};
-  const std::vector<float> acc = rasterise(pr);
+  const std::vector<std::uint32_t> acc = rasterise(pr);
 
   Image img;
   img.width = pr.W;
   img.height = pr.H;
   img.rgba.resize(acc.size());
   const Srgb& enc = srgb();
+  const std::uint32_t n = std::uint32_t(pr.samples * pr.samples), half = n / 2;  // average, rounded
   for (std::size_t i = 0; i < acc.size(); i += 4) {
-    img.rgba[i] = enc.encode(acc[i]);
-    img.rgba[i + 1] = enc.encode(acc[i + 1]);
-    img.rgba[i + 2] = enc.encode(acc[i + 2]);
-    img.rgba[i + 3] = std::uint8_t(std::lround(std::clamp(acc[i + 3], 0.0f, 1.0f) * 255));
+    img.rgba[i] = enc.code[(acc[i] + half) / n];
+    img.rgba[i + 1] = enc.code[(acc[i + 1] + half) / n];
+    img.rgba[i + 2] = enc.code[(acc[i + 2] + half) / n];
+    img.rgba[i + 3] = std::uint8_t(((acc[i + 3] + half) / n + 128) / 257);
   }
   for (const Text& t : pr.texts) detail::drawText(img, t.text, t.x, t.y, t.style);
   return img;
