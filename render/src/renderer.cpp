@@ -43,9 +43,9 @@ namespace {
 
 using detail::invalid;
 constexpr double pi = std::numbers::pi;
-constexpr int maxImageSide = 16384;
+constexpr int maxImageSide = 8192;
 constexpr int maxSamples = 16;
-constexpr int maxTileSide = 2048;  // the OSMesa buffer: 2048^2 x (4 colour + 4 depth/stencil) bytes, kept
+constexpr int maxTileSide = 2048;  // bounds the OSMesa buffer: 2048^2 x (4 colour + 4 depth/stencil) bytes
 
 std::mutex& renderMutex() {
   static std::mutex m;
@@ -77,38 +77,36 @@ const Srgb& srgb() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The OSMesa context and its colour buffer: created on first use at a fixed tile size and kept for
-// the life of the process, so that later renders pay neither context creation nor reallocation of
-// Mesa's colour and depth buffers (deliberately not destroyed at exit: Mesa's own teardown order is
-// not ours to rely on). Used only under renderMutex(). Images larger than a tile are drawn tile by tile.
+// The OSMesa context and its colour buffer: created on first use and kept for the life of the
+// process (deliberately not destroyed at exit: Mesa's own teardown order is not ours to rely on).
+// The buffer keeps its size while renders keep theirs, so repeated figures pay neither context
+// creation nor reallocation of Mesa's colour and depth buffers. Used only under renderMutex().
 struct GlContext {
   OSMesaContext ctx = nullptr;
   std::vector<std::uint8_t> buffer;  // OSMesa's colour buffer, rows bottom-up, filled by glFinish
-  int side = 0;                      // the buffer is side x side pixels
+  int width = 0, height = 0;         // of the buffer
+  int maxWidth = 0, maxHeight = 0;   // limits of OSMesa and of the viewport
 
-  void bind() {
-    if (!ctx) {
-      ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);
-      if (!ctx) throw std::runtime_error("soma::render: OSMesaCreateContextExt failed (is libOSMesa's llvmpipe usable?)");
+  void create() {
+    if (ctx) return;
+    ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);
+    if (!ctx) throw std::runtime_error("soma::render: OSMesaCreateContextExt failed (is libOSMesa's llvmpipe usable?)");
+    bind(16, 16);
+    GLint w = 0, h = 0, dims[2] = {0, 0};
+    OSMesaGetIntegerv(OSMESA_MAX_WIDTH, &w);
+    OSMesaGetIntegerv(OSMESA_MAX_HEIGHT, &h);
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, dims);
+    maxWidth = std::max(64, std::min({maxTileSide, w > 0 ? int(w) : maxTileSide, dims[0] > 0 ? int(dims[0]) : maxTileSide}));
+    maxHeight = std::max(64, std::min({maxTileSide, h > 0 ? int(h) : maxTileSide, dims[1] > 0 ? int(dims[1]) : maxTileSide}));
+  }
+  void bind(int w, int h) {
+    if (w != width || h != height) {
+      buffer.assign(std::size_t(w) * h * 4, 0);
+      width = w, height = h;
     }
-    if (side == 0) {
-      // Learn the limits on a small buffer, then settle on the tile size.
-      buffer.resize(16 * 16 * 4);
-      if (!OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, 16, 16))
-        throw std::runtime_error("soma::render: OSMesaMakeCurrent failed");
-      GLint w = 0, h = 0, dims[2] = {0, 0};
-      OSMesaGetIntegerv(OSMESA_MAX_WIDTH, &w);
-      OSMesaGetIntegerv(OSMESA_MAX_HEIGHT, &h);
-      glGetIntegerv(GL_MAX_VIEWPORT_DIMS, dims);
-      int m = maxTileSide;
-      for (GLint v : {w, h, dims[0], dims[1]})
-        if (v > 0) m = std::min(m, int(v));
-      side = std::max(m, 64);
-      buffer.assign(std::size_t(side) * side * 4, 0);
-    }
-    if (!OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, side, side))
-      throw std::runtime_error("soma::render: OSMesaMakeCurrent failed for a " + std::to_string(side) + "x" +
-                               std::to_string(side) + " buffer");
+    if (!OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, w, h))
+      throw std::runtime_error("soma::render: OSMesaMakeCurrent failed for a " + std::to_string(w) + "x" +
+                               std::to_string(h) + " buffer");
   }
   // Leave no context current on this thread: the next render may come from another thread.
   void release() { OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0); }
@@ -121,8 +119,8 @@ GlContext& glContext() {
 // ---------------------------------------------------------------------------------------------
 // Lighting (eye space; the camera looks down -z): a key light from the upper left behind the
 // viewer, a fill from the lower right (so that faces turned down are not black), a global ambient
-// term, a modest white highlight. Documented
-// in render/README.md; tests/render checks the centre of a sphere against it.
+// term, a modest white highlight. Documented in render/README.md; tests/render checks the centre
+// of a sphere against it.
 constexpr float ambient = 0.32f;
 constexpr float keyDiffuse = 0.55f, keySpecular = 0.15f, fillDiffuse = 0.30f, shininess = 40.0f;
 constexpr float keyDir[4] = {-0.25f, 0.35f, 1.0f, 0.0f};
@@ -203,7 +201,7 @@ void depthRange(Prepared& pr) {
     pr.zFar = ext;
   } else {
     pr.zFar = dmax * 1.02;
-    pr.zNear = std::max(0.8 * dmin * (1 - lineShrink(pr, hw)), pr.zFar * 1e-5);
+    pr.zNear = std::max(0.8 * dmin * (1 - lineShrink(pr, hw)), pr.zFar * 1e-4);
   }
 }
 
@@ -600,20 +598,27 @@ void checkGlError() {
 // pixel adds its value to the output pixel it lies in.
 std::vector<std::uint32_t> rasterise(const Prepared& pr) {
   GlContext& gl = glContext();
-  gl.bind();
+  gl.create();
   const auto& lin = srgb().linear;
   std::vector<std::uint32_t> acc(std::size_t(pr.W) * pr.H * 4, 0);
   const int vs = int(pr.vscale), s = pr.samples;
-  const int tile = std::max(vs, gl.side / vs * vs);
+  // Equal tiles, as few as the limits allow, sides multiples of vs (the last ones may be smaller).
+  auto tileSide = [vs](int total, int limit) {
+    const int n = (total + limit - 1) / limit;
+    const int side = ((total + n - 1) / n + vs - 1) / vs * vs;
+    return side <= limit ? side : std::max(vs, limit / vs * vs);
+  };
+  const int tileW = tileSide(pr.Wv, gl.maxWidth), tileH = tileSide(pr.Hv, gl.maxHeight);
+  gl.bind(tileW, tileH);
   std::vector<Eigen::Vector2d> jitter;
   if (pr.supersample) jitter.emplace_back(0, 0);
   else
     for (int jy = 0; jy < s; ++jy)
       for (int jx = 0; jx < s; ++jx) jitter.emplace_back((jx + 0.5) / s - 0.5, (jy + 0.5) / s - 0.5);
   glEnable(GL_SCISSOR_TEST);  // clears stay inside the tile
-  for (int ty0 = 0; ty0 < pr.Hv; ty0 += tile)  // top-down tile origin
-    for (int tx0 = 0; tx0 < pr.Wv; tx0 += tile) {
-      const int tw = std::min(tile, pr.Wv - tx0), th = std::min(tile, pr.Hv - ty0);
+  for (int ty0 = 0; ty0 < pr.Hv; ty0 += tileH)  // top-down tile origin
+    for (int tx0 = 0; tx0 < pr.Wv; tx0 += tileW) {
+      const int tw = std::min(tileW, pr.Wv - tx0), th = std::min(tileH, pr.Hv - ty0);
       const int yb = pr.Hv - ty0 - th;  // bottom-up origin
       glScissor(0, 0, tw, th);
       for (const auto& j : jitter) {
@@ -623,7 +628,7 @@ std::vector<std::uint32_t> rasterise(const Prepared& pr) {
         for (int r = 0; r < th; ++r) {
           const int yv = ty0 + (th - 1 - r);  // top-down virtual row
           std::uint32_t* a = acc.data() + (std::size_t(yv / vs) * pr.W + tx0 / vs) * 4;
-          const std::uint8_t* p = gl.buffer.data() + std::size_t(r) * gl.side * 4;
+          const std::uint8_t* p = gl.buffer.data() + std::size_t(r) * gl.width * 4;
           for (int i = 0; i < tw; i += vs, a += 4)  // output pixel by output pixel
             for (int k = 0; k < vs; ++k, p += 4) {
               a[0] += lin[p[0]];

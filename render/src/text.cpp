@@ -217,18 +217,22 @@ void drawText(Image& image, const std::string& text, double x, double y, const T
   if (style.halo) {
     // Dilate the mask with a disc of radius rad (soft edge of one pixel).
     const double rad = std::max(1.5, style.pixelHeight / 10);
-    const int R = int(std::ceil(rad));
+    const int R = int(std::ceil(rad)), K = 2 * R + 1;
+    std::vector<float> fall(std::size_t(K) * K);  // the disc's soft-edged weights
+    for (int dj = -R; dj <= R; ++dj)
+      for (int di = -R; di <= R; ++di)
+        fall[std::size_t(dj + R) * K + (di + R)] = float(std::clamp(rad + 0.5 - std::sqrt(double(di * di + dj * dj)), 0.0, 1.0));
     Coverage halo = mask;
     for (int j = 0; j < mask.h; ++j)
       for (int i = 0; i < mask.w; ++i) {
         float best = 0;
-        for (int dj = -R; dj <= R && best < 1; ++dj)
-          for (int di = -R; di <= R; ++di) {
-            const int ii = i + di, jj = j + dj;
-            if (ii < 0 || jj < 0 || ii >= mask.w || jj >= mask.h) continue;
-            const double fall = std::clamp(rad + 0.5 - std::sqrt(double(di * di + dj * dj)), 0.0, 1.0);
-            best = std::max(best, float(fall) * mask.a[std::size_t(jj) * mask.w + ii]);
-          }
+        for (int dj = -R; dj <= R && best < 1; ++dj) {
+          const int jj = j + dj;
+          if (jj < 0 || jj >= mask.h) continue;
+          const float* m = mask.a.data() + std::size_t(jj) * mask.w;
+          const float* w = fall.data() + std::size_t(dj + R) * K + R;
+          for (int di = std::max(-R, -i); di <= R && i + di < mask.w; ++di) best = std::max(best, w[di] * m[i + di]);
+        }
         halo.a[std::size_t(j) * mask.w + i] = best;
       }
     blend(image, halo, *style.halo);
