@@ -281,7 +281,16 @@ void addPiece(LineMesh& m, const std::vector<Eigen::Vector3d>& q, double hw) {
       m.xyz.insert(m.xyz.end(), {p.x() + s * n.x(), p.y() + s * n.y(), p.z()});
     m.idx.insert(m.idx.end(), {b, b + 1, b + 3, b, b + 3, b + 2});
   }
-  for (const auto& p : q) addDisc(m, p, hw);
+  // Round ends, and round joints where the turn opens a visible wedge on the outer side
+  // (hw * turning angle above 0.05 rasterised pixels); smooth stretches need none.
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    if (i > 0 && i + 1 < q.size()) {
+      const Eigen::Vector2d a = (q[i] - q[i - 1]).head<2>(), b = (q[i + 1] - q[i]).head<2>();
+      const double turn = std::atan2(std::abs(a.x() * b.y() - a.y() * b.x()), a.dot(b));
+      if (a.squaredNorm() > 0 && b.squaredNorm() > 0 && hw * turn < 0.05) continue;
+    }
+    addDisc(m, q[i], hw);
+  }
 }
 
 LineMesh polylineMesh(const Prepared& pr, const Polyline& pl) {

@@ -100,7 +100,9 @@ Scene hyperboloidScene() {
 
 std::filesystem::path demoDir() {
   const char* env = std::getenv("SOMA_RENDER_DEMO_DIR");
-  return env && *env ? std::filesystem::path(env) : std::filesystem::path("/work/main/out/render-demo");
+  if (env && *env) return env;
+  // <source>/tests/render/demo.cpp -> <source>/out/render-demo
+  return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "out" / "render-demo";
 }
 }  // namespace
 
