@@ -35,7 +35,7 @@ Scene helixScene() {
   Scene s;
   s.title = "Screw motion about z: a helix swept by a frame";
   Tube helix;
-  helix.c = palette::blue;
+  helix.c = palette::reddishPurple;  // apart from the frames' axis colours
   const int n = 400;
   for (int k = 0; k <= n; ++k) {
     const double t = 2 * pi * turns * k / n;
