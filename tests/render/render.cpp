@@ -378,3 +378,38 @@ TEST_CASE("render: a polyline through the eye plane is clipped at the near plane
   // eye would land there, mirrored).
   for (int y = 0; y < int(far.y()) - 3; ++y) CHECK(px(img, w / 2, y)[0] == 255);
 }
+
+TEST_CASE("render: two-sided surfaces light and tint their back faces; solids cull them", "[render]") {
+  const Camera below = Camera::ortho({0, 0, -5}, {0, 0, 0}, {0, 1, 0}, 2);  // sees the square's back
+  const Camera above = topOrtho();
+  Mesh m = square(0.5, {0, 0, 0}, palette::vermillion);  // normal +z
+  Scene s;
+  s.add(m);
+  const auto front = px(render(s, small(above, 40, 40, 1)), 20, 20);
+  const auto back = px(render(s, small(below, 40, 40, 1)), 20, 20);
+  const auto wantFront = litFacingViewer(palette::vermillion), wantBack = litFacingViewer(palette::vermillion.lighter(0.35f));
+  for (int k = 0; k < 3; ++k) {
+    CHECK(std::abs(front[k] - std::clamp(wantFront[k], 0.0, 1.0) * 255) <= 2.0);
+    CHECK(std::abs(back[k] - std::clamp(wantBack[k], 0.0, 1.0) * 255) <= 2.0);
+  }
+  s.meshes[0].twoSided = false;
+  CHECK(px(render(s, small(below, 40, 40, 1)), 20, 20) == rgba8(s.background));
+  CHECK(px(render(s, small(above, 40, 40, 1)), 20, 20) == front);
+}
+
+TEST_CASE("render: frames draw x, y, z in the axis colours", "[render]") {
+  Scene s;
+  Frame f;
+  f.scale = 0.8;
+  s.add(f);
+  const Image img = render(s, small(topOrtho(), 80, 80, 2));
+  // Looking down z: the x arrow points right, the y arrow up; halfway along each shaft.
+  const auto x = px(img, 56, 40), y = px(img, 40, 23);
+  CHECK(x[0] > x[1] + 60);  // vermillion: red dominates
+  CHECK(x[0] > x[2] + 60);
+  CHECK(y[1] > y[0] + 60);  // bluish green: green dominates
+  CHECK(y[1] > y[2] + 10);
+  const auto origin = px(img, 40, 40);  // the z arrow, seen end on: its head, blue, covers the origin
+  CHECK(origin[2] > origin[0] + 60);
+  CHECK(origin[2] > origin[1] + 20);
+}
