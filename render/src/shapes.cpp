@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace soma::render {
 
@@ -65,10 +66,14 @@ Mesh parametricSurface(const SurfaceMap& f, std::pair<double, double> ur, std::p
       const double scale = fu.squaredNorm() * fv.squaredNorm();
       if (n.squaredNorm() > 1e-12 * scale && scale > 0) n.normalize();
       else n = meshN[id(i, j)];
-      // Orientation follows the triangles (f_u x f_v for increasing u, v) when du, dv > 0.
+      // The grid differences are du f_u and dv f_v, so n is along du dv (f_u x f_v), like the
+      // triangles' winding: when exactly one range is reversed, turn both round so that the front
+      // is always the side of f_u x f_v.
       if (du * dv < 0) n = -n;
       m.n[id(i, j)] = n;
     }
+  if (du * dv < 0)
+    for (auto& t : m.tri) std::swap(t[1], t[2]);
   return m;
 }
 

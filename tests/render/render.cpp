@@ -413,3 +413,21 @@ TEST_CASE("render: frames draw x, y, z in the axis colours", "[render]") {
   CHECK(origin[2] > origin[0] + 60);
   CHECK(origin[2] > origin[1] + 20);
 }
+
+TEST_CASE("render: parametricSurface's front is the side of f_u x f_v, whichever way the ranges run", "[render]") {
+  // A saddle z = u v over the square: f_u x f_v = (-v, -u, 1).
+  const SurfaceMap f = [](double u, double v) { return Eigen::Vector3d(u, v, u * v); };
+  for (auto ur : {std::pair{-1.0, 1.0}, std::pair{1.0, -1.0}})
+    for (auto vr : {std::pair{-1.0, 1.0}, std::pair{1.0, -1.0}}) {
+      const Mesh m = parametricSurface(f, ur, vr, 6, 5);
+      REQUIRE(m.n.size() == m.v.size());
+      for (std::size_t k = 0; k < m.v.size(); ++k) {
+        const Eigen::Vector3d want = Eigen::Vector3d(-m.v[k].y(), -m.v[k].x(), 1).normalized();
+        CHECK(m.n[k].dot(want) > 0.99);
+      }
+      for (const auto& t : m.tri) {  // winding agrees with the normals
+        const Eigen::Vector3d g = (m.v[t[1]] - m.v[t[0]]).cross(m.v[t[2]] - m.v[t[0]]);
+        CHECK(g.dot(m.n[t[0]] + m.n[t[1]] + m.n[t[2]]) > 0);
+      }
+    }
+}

@@ -12,6 +12,8 @@ using SurfaceMap = std::function<Eigen::Vector3d(double u, double v)>;
 
 /// Triangulated surface f(u, v) on [u0, u1] x [v0, v1] with nu x nv quads (nu, nv >= 1), vertex
 /// normals from central differences of f (falling back to the mesh normal where f is singular).
+/// The front (counter-clockwise triangles, normals) is the side of f_u x f_v, whichever way the
+/// ranges run.
 /// Throws std::invalid_argument for nu or nv < 1, a non-finite range, or f returning NaN.
 Mesh parametricSurface(const SurfaceMap& f, std::pair<double, double> uRange,
                        std::pair<double, double> vRange, int nu, int nv,
