@@ -58,6 +58,33 @@ TEMPLATE_TEST_CASE("CBH series: the error drops with the order of the truncation
   CHECK_THROWS_WITH(bch(SO3Tangent<S>(), SO3Tangent<S>(), 5), Contains("order must be"));
 }
 
+TEMPLATE_TEST_CASE("so(3) closed-form BCH composition", "[lie]", SOMA_TEST_SCALARS) {
+  using S = TestType;
+  using std::atan2;
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  auto& g = rng(119);
+  const S tol = S(64) * Tolerance<S>::epsilon();
+  // GF-4.8-so3-closed-form-bch (test values θ1 = 1.1, θ2 = −0.8, random unit axes):
+  // cos(φ/2) = c1c2 − s1s2 x1·x2, a sin(φ/2) = s1c2, b sin(φ/2) = c1s2, c sin(φ/2) = s1s2,
+  // e^{θ1x1} e^{θ2x2} = e^{φ(a x1 + b x2 + c [x1, x2])}, [x1, x2] = x1 × x2 in so(3).
+  for (int i = 0; i < 10; ++i) {
+    const Vec3<S> x1 = unitVec3<S>(g), x2 = unitVec3<S>(g);
+    const S t1 = S(11) / S(10), t2 = -S(8) / S(10);
+    const S c1 = cos(t1 / S(2)), s1 = sin(t1 / S(2)), c2 = cos(t2 / S(2)), s2 = sin(t2 / S(2));
+    const S cphi = c1 * c2 - s1 * s2 * x1.dot(x2);
+    const Vec3<S> sv = s1 * c2 * x1 + c1 * s2 * x2 + s1 * s2 * x1.cross(x2);  // sin(φ/2)(a, b, c)
+    const S sphi = sqrt(sv.squaredNorm());
+    const S phi = S(2) * atan2(sphi, cphi);
+    const S a = s1 * c2 / sphi, b = c1 * s2 / sphi, c = s1 * s2 / sphi;
+    const SO3Tangent<S> X1(Vec3<S>(x1 * t1)), X2(Vec3<S>(x2 * t2));
+    const SO3Tangent<S> expected(Vec3<S>(phi * (a * x1 + b * x2 + c * x1.cross(x2))));
+    CHECK((X1.exp() * X2.exp()).log().isApprox(expected, tol));
+    CHECK(bracket(SO3Tangent<S>(x1), SO3Tangent<S>(x2)).isApprox(SO3Tangent<S>(Vec3<S>(x1.cross(x2))), tol));
+  }
+}
+
 TEMPLATE_TEST_CASE("dexp series: ljac, rjac, and the printed 4th term (E4.9)", "[lie]",
                    double, long double, __float128) {
   using S = TestType;

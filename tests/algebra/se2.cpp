@@ -58,7 +58,9 @@ template <class S> std::vector<S> edgeAngles() {
   const S p = pi<S>();
   return {S(0),          S(1e-8),        -S(1e-8),       thr / S(2),     S(2) * thr,
           S(3) / S(10),  p / S(2),       p - S(1e-8),    p,              -p + S(1e-8),
-          -p + S(2) * Tolerance<S>::epsilon(), S(2),     -S(25) / S(10)};
+          -p + S(2) * Tolerance<S>::epsilon(), S(2),     -S(25) / S(10),
+          // just below and just above the switch (relative 2^-10): the worst case of each side
+          thr * (S(1) - S(1) / S(1024)), thr * (S(1) + S(1) / S(1024))};
 }
 template <class S> std::vector<S> edgeLengths() { return {S(0), S(1e-8), S(1), S(1e8)}; }
 
