@@ -30,7 +30,8 @@ namespace soma {
 // ---------------------------------------------------------------------------------------------
 // Dual numbers
 
-/// A dual number x + εy with ε² = 0 (GF §7.6, used for the norm and the dual angle of §9.3).
+/// A dual number x + εy with ε² = 0 (used for the norm and the dual angle of §9.3).
+// GF §7.6, GF-7.6-transference
 template <class S> struct DualNumber {
   S re{0};  ///< real part
   S du{0};  ///< dual part (coefficient of ε)
@@ -41,10 +42,11 @@ template <class S> struct DualNumber {
   DualNumber operator+(const DualNumber& o) const { return {re + o.re, du + o.du}; }
   DualNumber operator-(const DualNumber& o) const { return {re - o.re, du - o.du}; }
   DualNumber operator-() const { return {-re, -du}; }
-  /// (x + εy)(u + εw) = xu + ε(xw + yu). GF §7.6, GF-9.3-quaternion-product-transference
+  /// (x + εy)(u + εw) = xu + ε(xw + yu). GF §7.6, GF-7.6-transference
   DualNumber operator*(const DualNumber& o) const { return {re * o.re, re * o.du + du * o.re}; }
   DualNumber operator*(const S& k) const { return {re * k, du * k}; }
   /// (x + εy)/(u + εw) = x/u + ε(yu − xw)/u²; throws InvalidInput for u = 0 (a zero divisor).
+  // GF §7.6, GF-7.6-transference (extreme: zero divisors)
   DualNumber operator/(const DualNumber& o) const {
     if (o.re == S(0)) throw InvalidInput("DualNumber: division by a pure dual number (real part 0)");
     return {re / o.re, (du * o.re - re * o.du) / (o.re * o.re)};
@@ -53,7 +55,8 @@ template <class S> struct DualNumber {
     using std::abs;
     return abs(re - o.re) <= tol && abs(du - o.du) <= tol;
   }
-  /// √(x + εy) = √x + ε y/(2√x), x > 0; throws InvalidInput for x ≤ 0. GF §7.6
+  /// √(x + εy) = √x + ε y/(2√x), x > 0; throws InvalidInput for x ≤ 0.
+  // GF §7.6, GF-7.6-transference (f(a + εb) = f(a) + εb f'(a))
   DualNumber sqrt() const {
     using std::sqrt;
     if (!(re > S(0)))
@@ -61,7 +64,8 @@ template <class S> struct DualNumber {
     const S r = sqrt(re);
     return {r, du / (S(2) * r)};
   }
-  /// cos and sin of a dual angle θ + εd: cos θ − ε d sin θ and sin θ + ε d cos θ. GF §7.6
+  /// cos and sin of a dual angle θ + εd: cos θ − ε d sin θ and sin θ + ε d cos θ.
+  // GF §7.6, GF-7.6-dual-killing-and-dual-angle
   DualNumber cos() const {
     using std::cos;
     using std::sin;
@@ -172,7 +176,8 @@ template <class S> class DualQuaternion {
   DualQuaternion conjugate() const {
     return DualQuaternion(detail::quatConj(a_), detail::quatConj(c_));
   }
-  /// a − εc (conjugation of the dual unit only).
+  /// a − εc (conjugation of the dual unit only; with conjugate() it gives the point action's
+  /// factor). GF §9.3, GF-9.2-euclidean-group-Cl0n1
   DualQuaternion dualConjugate() const { return DualQuaternion(a_, detail::quatScale(c_, S(-1))); }
   /// a* − εc* (both conjugations), the right factor of the point action.
   // GF §9.3, GF-9.2-euclidean-group-Cl0n1
