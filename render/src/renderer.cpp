@@ -135,10 +135,24 @@ constexpr double lineBias = 2.0;
 // ---------------------------------------------------------------------------------------------
 // Everything a pass draws, prepared once per render.
 struct LineMesh {
-  std::vector<double> xyz;  // virtual-window coordinates: x right, y up (pixels), z = NDC depth
+  // Virtual-window coordinates: x right, y up (pixels), z = NDC depth. float: Mesa's fast path, and
+  // its 24-bit mantissa matches the 24-bit depth buffer.
+  std::vector<float> xyz;
   std::vector<unsigned> idx;
   Color c;
 };
+
+/// Small shaded spheres drawn as screen-space discs ("impostors"): a fan whose vertex colours are
+/// the lighting model evaluated at the sphere normals they stand for, at the depth of the sphere's
+/// front. A sphere a few pixels across looks the same, at a twentieth of the triangles.
+struct DiscMesh {
+  std::vector<float> xyz;  // virtual-window coordinates, as LineMesh
+  std::vector<float> rgba;
+  std::vector<unsigned> idx;
+  bool empty() const { return idx.empty(); }
+};
+/// Spheres smaller than this radius in output pixels are drawn as impostors.
+constexpr double impostorPixels = 16;
 
 struct Text {
   std::string text;
@@ -159,6 +173,7 @@ struct Prepared {
   detail::Batch solid, surface, solidT, surfaceT;
   std::vector<float> surfaceBack, surfaceTBack;  // back-face colours of the two-sided batches
   std::vector<LineMesh> lines, linesT;
+  DiscMesh dots, dotsT;
   std::vector<Text> texts;
 };
 
@@ -213,6 +228,56 @@ double pixelsPerUnit(const Prepared& pr, const Eigen::Vector3d& p) {
   return pr.H / (2 * std::tan(pr.cam.fovYDegrees * pi / 360) * d);
 }
 
+// The fixed-function lighting of drawPass, evaluated on the CPU for a unit eye-space normal n.
+Color litColour(const Color& c, const Eigen::Vector3d& n) {
+  const Eigen::Vector3d L0 = Eigen::Vector3d(keyDir[0], keyDir[1], keyDir[2]).normalized();
+  const Eigen::Vector3d L1 = Eigen::Vector3d(fillDir[0], fillDir[1], fillDir[2]).normalized();
+  const double d0 = std::max(0.0, n.dot(L0)), d1 = std::max(0.0, n.dot(L1));
+  const double diffuse = ambient + keyDiffuse * d0 + fillDiffuse * d1;
+  const double spec = d0 > 0 ? keySpecular * std::pow(std::max(0.0, n.dot((L0 + Eigen::Vector3d::UnitZ()).normalized())), double(shininess)) : 0.0;
+  auto ch = [&](float v) { return float(std::clamp(v * diffuse + spec, 0.0, 1.0)); };
+  return {ch(c.r), ch(c.g), ch(c.b), c.a};
+}
+
+Eigen::Vector3d toWindow(const Prepared& pr, const Eigen::Vector4d& e);
+
+// A sphere of world radius r at p drawn as an impostor of rv virtual pixels.
+void addImpostor(const Prepared& pr, DiscMesh& m, const Eigen::Vector3d& p, double r, double rv, const Color& c) {
+  Eigen::Vector4d e = pr.view * p.homogeneous();
+  if (pr.cam.orthographic) {
+    e.z() += r;
+  } else {
+    const double d = -e.z();
+    if (!(d - r > pr.zNear)) return;  // reaches the near plane: not drawn
+    e.head<3>() *= (d - r) / d;
+  }
+  const Eigen::Vector3d w = toWindow(pr, e);
+  const int n = rv / pr.vscale < 4 ? 8 : 12;  // rv is in virtual pixels
+  const unsigned first = unsigned(m.xyz.size() / 3);
+  auto vertex = [&](double rho, double a) {
+    const Eigen::Vector3d nrm(rho * std::cos(a), rho * std::sin(a), std::sqrt(std::max(0.0, 1 - rho * rho)));
+    m.xyz.insert(m.xyz.end(), {float(w.x() + rv * nrm.x()), float(w.y() + rv * nrm.y()), float(w.z())});
+    const Color lc = litColour(c, nrm);
+    m.rgba.insert(m.rgba.end(), {lc.r, lc.g, lc.b, lc.a});
+  };
+  vertex(0, 0);
+  // Rings of normals; a sphere under 4 output pixels gets only a centre and a rim of 8.
+  static constexpr double fine[] = {0.5, 0.8, 1.0}, coarse[] = {1.0};
+  const bool tiny = rv / pr.vscale < 4;
+  const double* rings = tiny ? coarse : fine;
+  const unsigned nrings = tiny ? 1 : 3;
+  for (unsigned ring = 0; ring < nrings; ++ring)
+    for (int k = 0; k < n; ++k) vertex(rings[ring], 2 * pi * k / n);
+  for (unsigned k = 0; k < unsigned(n); ++k) {
+    const unsigned k1 = (k + 1) % n;
+    m.idx.insert(m.idx.end(), {first, first + 1 + k, first + 1 + k1});
+    for (unsigned ring = 0; ring + 1 < nrings; ++ring) {
+      const unsigned in = first + 1 + ring * n, out = in + n;
+      m.idx.insert(m.idx.end(), {in + k, out + k, out + k1, in + k, out + k1, in + k1});
+    }
+  }
+}
+
 void tessellate(Prepared& pr) {
   const Scene& s = *pr.scene;
   Eigen::AlignedBox3d box = s.bounds();
@@ -224,7 +289,12 @@ void tessellate(Prepared& pr) {
 
   for (const Points& x : s.points) {
     const double r = detail::pointRadius(x, L);
-    for (const auto& p : x.p) detail::addSphere(solidFor(x.c), p, r, x.c, detail::circleSegments(r, p, ppu));
+    for (const auto& p : x.p) {
+      // Spheres a few pixels across need few facets (a workspace may have 10^5 of them).
+      const double rpx = r * ppu(p);
+      if (rpx < impostorPixels) addImpostor(pr, transparent(x.c) ? pr.dotsT : pr.dots, p, r, rpx * pr.vscale, x.c);
+      else detail::addSphere(solidFor(x.c), p, r, x.c, detail::circleSegments(r, p, ppu));
+    }
   }
   for (const Tube& x : s.tubes) detail::addTube(solidFor(x.c), x.p, detail::tubeRadius(x, L), x.c, x.closed, ppu);
   for (const Mesh& x : s.meshes) {
@@ -261,10 +331,10 @@ Eigen::Vector3d toWindow(const Prepared& pr, const Eigen::Vector4d& e) {
 void addDisc(LineMesh& m, const Eigen::Vector3d& c, double r) {
   const int n = r > 0.3 ? std::clamp(int(std::ceil(pi / std::acos(1 - 0.25 / r))), 8, 64) : 8;
   const unsigned centre = unsigned(m.xyz.size() / 3);
-  m.xyz.insert(m.xyz.end(), {c.x(), c.y(), c.z()});
+  m.xyz.insert(m.xyz.end(), {float(c.x()), float(c.y()), float(c.z())});
   for (int k = 0; k < n; ++k) {
     const double a = 2 * pi * k / n;
-    m.xyz.insert(m.xyz.end(), {c.x() + r * std::cos(a), c.y() + r * std::sin(a), c.z()});
+    m.xyz.insert(m.xyz.end(), {float(c.x() + r * std::cos(a)), float(c.y() + r * std::sin(a)), float(c.z())});
   }
   for (int k = 0; k < n; ++k) m.idx.insert(m.idx.end(), {centre, centre + 1 + k, centre + 1 + (k + 1) % n});
 }
@@ -278,7 +348,7 @@ void addPiece(LineMesh& m, const std::vector<Eigen::Vector3d>& q, double hw) {
     const Eigen::Vector2d n = Eigen::Vector2d(-d.y(), d.x()) * (hw / len);
     const unsigned b = unsigned(m.xyz.size() / 3);
     for (const auto& [p, s] : {std::pair{q[i], 1.0}, std::pair{q[i], -1.0}, std::pair{q[i + 1], 1.0}, std::pair{q[i + 1], -1.0}})
-      m.xyz.insert(m.xyz.end(), {p.x() + s * n.x(), p.y() + s * n.y(), p.z()});
+      m.xyz.insert(m.xyz.end(), {float(p.x() + s * n.x()), float(p.y() + s * n.y()), float(p.z())});
     m.idx.insert(m.idx.end(), {b, b + 1, b + 3, b, b + 3, b + 2});
   }
   // Round ends, and round joints where the turn opens a visible wedge on the outer side
@@ -477,15 +547,36 @@ void drawSolid(const detail::Batch& b, const Eigen::Matrix4d& view) {
   drawBatch(b, nullptr, view);
 }
 
-void drawLines(const std::vector<LineMesh>& lines, const Eigen::Matrix4d& tile, const Prepared& pr, int& stencilRef) {
-  if (lines.empty()) return;
-  // Virtual-window coordinates -> virtual NDC, then the tile transform.
+// Virtual-window coordinates -> virtual NDC, then the tile transform.
+Eigen::Matrix4d windowProjection(const Prepared& pr, const Eigen::Matrix4d& tile) {
   Eigen::Matrix4d w = Eigen::Matrix4d::Identity();
   w(0, 0) = 2.0 / pr.Wv, w(0, 3) = -1;
   w(1, 1) = 2.0 / pr.Hv, w(1, 3) = -1;
-  const Eigen::Matrix4d p = tile * w;
+  return tile * w;
+}
+
+void drawDots(const DiscMesh& m, const Eigen::Matrix4d& tile, const Prepared& pr) {
+  if (m.empty()) return;
   glMatrixMode(GL_PROJECTION);
-  glLoadMatrixd(p.data());
+  glLoadMatrixd(windowProjection(pr, tile).data());
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glDisable(GL_LIGHTING);
+  glDisable(GL_CULL_FACE);
+  glDisableClientState(GL_NORMAL_ARRAY);
+  glVertexPointer(3, GL_FLOAT, 0, m.xyz.data());
+  glColorPointer(4, GL_FLOAT, 0, m.rgba.data());
+  glDrawElements(GL_TRIANGLES, GLsizei(m.idx.size()), GL_UNSIGNED_INT, m.idx.data());
+  glEnableClientState(GL_NORMAL_ARRAY);
+  glEnable(GL_LIGHTING);
+  glMatrixMode(GL_PROJECTION);
+  glLoadMatrixd(Eigen::Matrix4d(tile * pr.proj).data());
+}
+
+void drawLines(const std::vector<LineMesh>& lines, const Eigen::Matrix4d& tile, const Prepared& pr, int& stencilRef) {
+  if (lines.empty()) return;
+  glMatrixMode(GL_PROJECTION);
+  glLoadMatrixd(windowProjection(pr, tile).data());
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
   glDisable(GL_LIGHTING);
@@ -504,7 +595,7 @@ void drawLines(const std::vector<LineMesh>& lines, const Eigen::Matrix4d& tile, 
     ++stencilRef;
     glStencilFunc(GL_NOTEQUAL, stencilRef, 0xFF);
     glColor4f(m.c.r, m.c.g, m.c.b, m.c.a);
-    glVertexPointer(3, GL_DOUBLE, 0, m.xyz.data());
+    glVertexPointer(3, GL_FLOAT, 0, m.xyz.data());
     glDrawElements(GL_TRIANGLES, GLsizei(m.idx.size()), GL_UNSIGNED_INT, m.idx.data());
   }
   glDisable(GL_STENCIL_TEST);
@@ -565,6 +656,7 @@ void drawPass(const Prepared& pr, const Eigen::Matrix4d& tile, int tw, int th) {
   // Opaque: solids, surfaces, lines.
   drawSolid(pr.solid, pr.view);
   drawSurface(pr.surface, pr.surfaceBack, pr.view);
+  drawDots(pr.dots, tile, pr);
   drawLines(pr.lines, tile, pr, stencilRef);
   // Transparent, over everything opaque, without depth writes (no sorting).
   glEnable(GL_BLEND);
@@ -572,6 +664,7 @@ void drawPass(const Prepared& pr, const Eigen::Matrix4d& tile, int tw, int th) {
   glDepthMask(GL_FALSE);
   drawSolid(pr.solidT, pr.view);
   drawSurface(pr.surfaceT, pr.surfaceTBack, pr.view);
+  drawDots(pr.dotsT, tile, pr);
   drawLines(pr.linesT, tile, pr, stencilRef);
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);

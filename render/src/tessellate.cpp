@@ -74,11 +74,13 @@ int circleSegments(double r, const Eigen::Vector3d& centre, const PixelScale& pi
 void addSphere(Batch& b, const Eigen::Vector3d& c, double r, const Color& color, int segments) {
   const int slices = std::max(8, segments), stacks = std::max(4, segments / 2);
   const unsigned first = unsigned(b.pos.size() / 3);
+  std::vector<double> cp(slices + 1), sp(slices + 1);
+  for (int j = 0; j <= slices; ++j) cp[j] = std::cos(2 * pi * j / slices), sp[j] = std::sin(2 * pi * j / slices);
   for (int i = 0; i <= stacks; ++i) {
     const double th = pi * i / stacks;  // from +z down to -z
+    const double st = std::sin(th), ct = std::cos(th);
     for (int j = 0; j <= slices; ++j) {
-      const double ph = 2 * pi * j / slices;
-      const Eigen::Vector3d d(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th));
+      const Eigen::Vector3d d(st * cp[j], st * sp[j], ct);
       b.vertex(c + r * d, d, color);
     }
   }
