@@ -22,6 +22,7 @@
 #include <cstdio>
 #include <mutex>
 #include <numbers>
+#include <unordered_map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -516,16 +517,49 @@ void prepareText(Prepared& pr) {
 // One rasterisation pass into the current OSMesa buffer (tw x th pixels), with `tile` applied
 // after the projection (it selects a sub-window of the virtual image and a sub-pixel jitter).
 
+// Buffer objects for the arrays of one render: uploaded on first use, reused by every tile and
+// jitter pass (client-side arrays would be scanned and copied by Mesa at every draw), deleted
+// when the render's rasterisation ends. array() and elements() bind the buffer and return the
+// offset (0) to pass to gl*Pointer and glDrawElements.
+class GpuArrays {
+ public:
+  GpuArrays() = default;
+  GpuArrays(const GpuArrays&) = delete;
+  GpuArrays& operator=(const GpuArrays&) = delete;
+  ~GpuArrays() {
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+    for (const auto& [ptr, id] : ids_) glDeleteBuffers(1, &id);
+  }
+  template <class T> const void* array(const std::vector<T>& v) { return bind(GL_ARRAY_BUFFER, v); }
+  const void* elements(const std::vector<unsigned>& v) { return bind(GL_ELEMENT_ARRAY_BUFFER, v); }
+
+ private:
+  template <class T> const void* bind(GLenum target, const std::vector<T>& v) {
+    auto [it, fresh] = ids_.try_emplace(v.data(), 0u);
+    if (fresh) {
+      glGenBuffers(1, &it->second);
+      glBindBuffer(target, it->second);
+      glBufferData(target, GLsizeiptr(v.size() * sizeof(T)), v.data(), GL_STATIC_DRAW);
+    } else {
+      glBindBuffer(target, it->second);
+    }
+    return nullptr;
+  }
+  std::unordered_map<const void*, GLuint> ids_;
+};
+GpuArrays* gpu = nullptr;  // the current render's, under renderMutex()
+
 void drawBatch(const detail::Batch& b, const std::vector<float>* colours, const Eigen::Matrix4d& view) {
   if (b.empty()) return;
   Eigen::Matrix4d mv = view;
   mv.block<3, 1>(0, 3) += view.block<3, 3>(0, 0) * b.origin;
   glMatrixMode(GL_MODELVIEW);
   glLoadMatrixd(mv.data());
-  glVertexPointer(3, GL_FLOAT, 0, b.pos.data());
-  glNormalPointer(GL_FLOAT, 0, b.nrm.data());
-  glColorPointer(4, GL_FLOAT, 0, colours ? colours->data() : b.col.data());
-  glDrawElements(GL_TRIANGLES, GLsizei(b.idx.size()), GL_UNSIGNED_INT, b.idx.data());
+  glVertexPointer(3, GL_FLOAT, 0, gpu->array(b.pos));
+  glNormalPointer(GL_FLOAT, 0, gpu->array(b.nrm));
+  glColorPointer(4, GL_FLOAT, 0, gpu->array(colours ? *colours : b.col));
+  glDrawElements(GL_TRIANGLES, GLsizei(b.idx.size()), GL_UNSIGNED_INT, gpu->elements(b.idx));
 }
 
 // Two-sided surface: back faces (tinted), then front faces; two-sided lighting flips back normals.
@@ -564,9 +598,9 @@ void drawDots(const DiscMesh& m, const Eigen::Matrix4d& tile, const Prepared& pr
   glDisable(GL_LIGHTING);
   glDisable(GL_CULL_FACE);
   glDisableClientState(GL_NORMAL_ARRAY);
-  glVertexPointer(3, GL_FLOAT, 0, m.xyz.data());
-  glColorPointer(4, GL_FLOAT, 0, m.rgba.data());
-  glDrawElements(GL_TRIANGLES, GLsizei(m.idx.size()), GL_UNSIGNED_INT, m.idx.data());
+  glVertexPointer(3, GL_FLOAT, 0, gpu->array(m.xyz));
+  glColorPointer(4, GL_FLOAT, 0, gpu->array(m.rgba));
+  glDrawElements(GL_TRIANGLES, GLsizei(m.idx.size()), GL_UNSIGNED_INT, gpu->elements(m.idx));
   glEnableClientState(GL_NORMAL_ARRAY);
   glEnable(GL_LIGHTING);
   glMatrixMode(GL_PROJECTION);
@@ -595,8 +629,8 @@ void drawLines(const std::vector<LineMesh>& lines, const Eigen::Matrix4d& tile, 
     ++stencilRef;
     glStencilFunc(GL_NOTEQUAL, stencilRef, 0xFF);
     glColor4f(m.c.r, m.c.g, m.c.b, m.c.a);
-    glVertexPointer(3, GL_FLOAT, 0, m.xyz.data());
-    glDrawElements(GL_TRIANGLES, GLsizei(m.idx.size()), GL_UNSIGNED_INT, m.idx.data());
+    glVertexPointer(3, GL_FLOAT, 0, gpu->array(m.xyz));
+    glDrawElements(GL_TRIANGLES, GLsizei(m.idx.size()), GL_UNSIGNED_INT, gpu->elements(m.idx));
   }
   glDisable(GL_STENCIL_TEST);
   glEnableClientState(GL_NORMAL_ARRAY);
@@ -717,6 +751,11 @@ std::vector<std::uint32_t> rasterise(const Prepared& pr) {
   else
     for (int jy = 0; jy < s; ++jy)
       for (int jx = 0; jx < s; ++jx) jitter.emplace_back((jx + 0.5) / s - 0.5, (jy + 0.5) / s - 0.5);
+  GpuArrays arrays;
+  gpu = &arrays;
+  struct Reset {
+    ~Reset() { gpu = nullptr; }
+  } reset;
   glEnable(GL_SCISSOR_TEST);  // clears stay inside the tile
   for (int ty0 = 0; ty0 < pr.Hv; ty0 += tileH)  // top-down tile origin
     for (int tx0 = 0; tx0 < pr.Wv; tx0 += tileW) {
