@@ -242,8 +242,27 @@ Color litColour(const Color& c, const Eigen::Vector3d& n) {
 
 Eigen::Vector3d toWindow(const Prepared& pr, const Eigen::Vector4d& e);
 
+// The layout of an impostor: the unit normals of its vertices (centre first, then rings of n) and
+// their lit colours, for one colour. Two layouts: a sphere under 4 output pixels in radius gets a
+// centre and a rim of 8; a larger one rings at 0.5, 0.8 and 1 of its radius, 12 around.
+struct ImpostorLayout {
+  int n = 0, rings = 0;
+  std::vector<Eigen::Vector3d> normal;
+  std::vector<Color> colour;
+  ImpostorLayout(bool tiny, const Color& c) : n(tiny ? 8 : 12), rings(tiny ? 1 : 3) {
+    static constexpr double fine[] = {0.5, 0.8, 1.0}, coarse[] = {1.0};
+    normal.emplace_back(0, 0, 1);
+    for (int ring = 0; ring < rings; ++ring)
+      for (int k = 0; k < n; ++k) {
+        const double rho = tiny ? coarse[ring] : fine[ring], a = 2 * pi * k / n;
+        normal.emplace_back(rho * std::cos(a), rho * std::sin(a), std::sqrt(std::max(0.0, 1 - rho * rho)));
+      }
+    for (const auto& nrm : normal) colour.push_back(litColour(c, nrm));
+  }
+};
+
 // A sphere of world radius r at p drawn as an impostor of rv virtual pixels.
-void addImpostor(const Prepared& pr, DiscMesh& m, const Eigen::Vector3d& p, double r, double rv, const Color& c) {
+void addImpostor(const Prepared& pr, DiscMesh& m, const Eigen::Vector3d& p, double r, double rv, const ImpostorLayout& l) {
   Eigen::Vector4d e = pr.view * p.homogeneous();
   if (pr.cam.orthographic) {
     e.z() += r;
@@ -253,26 +272,16 @@ void addImpostor(const Prepared& pr, DiscMesh& m, const Eigen::Vector3d& p, doub
     e.head<3>() *= (d - r) / d;
   }
   const Eigen::Vector3d w = toWindow(pr, e);
-  const int n = rv / pr.vscale < 4 ? 8 : 12;  // rv is in virtual pixels
   const unsigned first = unsigned(m.xyz.size() / 3);
-  auto vertex = [&](double rho, double a) {
-    const Eigen::Vector3d nrm(rho * std::cos(a), rho * std::sin(a), std::sqrt(std::max(0.0, 1 - rho * rho)));
-    m.xyz.insert(m.xyz.end(), {float(w.x() + rv * nrm.x()), float(w.y() + rv * nrm.y()), float(w.z())});
-    const Color lc = litColour(c, nrm);
-    m.rgba.insert(m.rgba.end(), {lc.r, lc.g, lc.b, lc.a});
-  };
-  vertex(0, 0);
-  // Rings of normals; a sphere under 4 output pixels gets only a centre and a rim of 8.
-  static constexpr double fine[] = {0.5, 0.8, 1.0}, coarse[] = {1.0};
-  const bool tiny = rv / pr.vscale < 4;
-  const double* rings = tiny ? coarse : fine;
-  const unsigned nrings = tiny ? 1 : 3;
-  for (unsigned ring = 0; ring < nrings; ++ring)
-    for (int k = 0; k < n; ++k) vertex(rings[ring], 2 * pi * k / n);
-  for (unsigned k = 0; k < unsigned(n); ++k) {
+  for (std::size_t v = 0; v < l.normal.size(); ++v) {
+    m.xyz.insert(m.xyz.end(), {float(w.x() + rv * l.normal[v].x()), float(w.y() + rv * l.normal[v].y()), float(w.z())});
+    m.rgba.insert(m.rgba.end(), {l.colour[v].r, l.colour[v].g, l.colour[v].b, l.colour[v].a});
+  }
+  const unsigned n = unsigned(l.n);
+  for (unsigned k = 0; k < n; ++k) {
     const unsigned k1 = (k + 1) % n;
     m.idx.insert(m.idx.end(), {first, first + 1 + k, first + 1 + k1});
-    for (unsigned ring = 0; ring + 1 < nrings; ++ring) {
+    for (unsigned ring = 0; ring + 1 < unsigned(l.rings); ++ring) {
       const unsigned in = first + 1 + ring * n, out = in + n;
       m.idx.insert(m.idx.end(), {in + k, out + k, out + k1, in + k, out + k1, in + k1});
     }
@@ -290,10 +299,12 @@ void tessellate(Prepared& pr) {
 
   for (const Points& x : s.points) {
     const double r = detail::pointRadius(x, L);
+    const ImpostorLayout tiny(true, x.c), fine(false, x.c);
     for (const auto& p : x.p) {
       // Spheres a few pixels across need few facets (a workspace may have 10^5 of them).
       const double rpx = r * ppu(p);
-      if (rpx < impostorPixels) addImpostor(pr, transparent(x.c) ? pr.dotsT : pr.dots, p, r, rpx * pr.vscale, x.c);
+      if (rpx < impostorPixels)
+        addImpostor(pr, transparent(x.c) ? pr.dotsT : pr.dots, p, r, rpx * pr.vscale, rpx < 4 ? tiny : fine);
       else detail::addSphere(solidFor(x.c), p, r, x.c, detail::circleSegments(r, p, ppu));
     }
   }
