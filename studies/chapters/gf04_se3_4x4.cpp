@@ -142,6 +142,13 @@ template <class S> void se3Log4x4(Context& c) {
                         " (error ≤ 64 eps · max(1, 1/θ², 1/(π − θ)))",
                     err, bound);
   }
+  // θ = 0 (pure translation): log G = G − I; the polynomial's csc³(θ/2) is 0/0 there.
+  const SE3Tangent<S> tr(Vec3<S>::Zero(), randomVec<S, 3>(g));
+  const Mat4<S> Gt = tr.exp().matrix();
+  c.checkResidual("θ = 0 (pure translation): soma SE3::log = vee(G − I)",
+                  maxAbs(Vec6<S>(tr.exp().log().coeffs() - SE3Tangent<S>::vee(Mat4<S>(Gt - Mat4<S>::Identity())).coeffs())), S(0));
+  c.checkEqual("θ = 0: the book's polynomial log (csc³(θ/2) = 1/0)", "non-finite",
+               allFinite(se3LogBook(Gt)) ? "finite" : "non-finite");
   if constexpr (std::is_same_v<S, double>) {
     if (c.makeFigures()) interpolationFigure(c);
   }
