@@ -1,0 +1,534 @@
+#pragma once
+// Multivectors of Cl(p,q,r) (GF §9.1), dense or grade-sparse, templated on the scalar.
+//
+// `Multivector<Sig, S, M>` stores one coefficient per basis blade whose grade is in the
+// compile-time grade mask M (bit k ⇔ grade k). `Dense<Sig,S>` keeps all 2^n; a `Bivector`,
+// `Vector` or `Even` (rotors, motors) keeps only its grades. A product of two multivectors is
+// computed from a compile-time table of the (i, j, k, sign) terms whose sign is nonzero, and its
+// result type keeps exactly the grades that can be nonzero (degenerate generators included), so
+// a motor times a motor in Cl(0,3,1) runs 64 multiply-adds and returns an `Even`.
+//
+// Operator map (one place, used throughout soma):
+//   a * b   geometric product                        geometric(a, b)
+//   a ^ b   outer (exterior, wedge, "meet" in the plane-based reading)   outer(a, b)
+//   a & b   regressive (join, shuffle) via Poincaré duality on the basis   regressive(a, b)
+//   a | b   left contraction a ⌋ b (grade gb − ga)    leftContraction(a, b)
+//           right contraction a ⌊ b (grade ga − gb)   rightContraction(a, b)
+//           scalar product ⟨a b⟩₀                     scalarProduct(a, b)
+//   ~a      reverse ã                                 a.reverse()
+//           grade (main) involution α(a)              a.involute()
+//           Clifford conjugation a* = α(ã)            a.conjugate()   (GF's c*)
+//           grade projection ⟨a⟩_k                    a.grade<k>(), a.grades<M>(), a.gradeProject(k)
+// Precedence caution: in C++ `^`, `&`, `|` bind more loosely than `+` and `==`: parenthesise.
+#include "soma/algebra/clifford/signature.hpp"
+#include "soma/algebra/errors.hpp"
+#include "soma/algebra/scalar.hpp"
+#include "soma/algebra/tolerance.hpp"
+
+#include <Eigen/LU>
+#include <sstream>
+#include <string>
+#include <type_traits>
+
+namespace soma::clifford {
+
+enum class Op { Geometric, Outer, LeftContraction, RightContraction, Scalar, Regressive };
+
+namespace detail {
+
+template <class Sig> constexpr int maskSize(GradeMask m) {
+  int c = 0;
+  for (Blade b = 0; b < Blade(Sig::dim); ++b)
+    if (m & gradeBit(bladeGrade(b))) ++c;
+  return c;
+}
+
+/// Storage layout of mask M: blades ordered by grade, then by bitmask value.
+template <class Sig, GradeMask M> struct Layout {
+  static constexpr int size = maskSize<Sig>(M);
+  static constexpr std::array<Blade, size> blades = [] {
+    std::array<Blade, size> a{};
+    int c = 0;
+    for (int k = 0; k <= Sig::n; ++k)
+      if (M & gradeBit(k))
+        for (Blade b = 0; b < Blade(Sig::dim); ++b)
+          if (bladeGrade(b) == k) a[c++] = b;
+    return a;
+  }();
+  /// Storage index of each blade, −1 if its grade is not in M.
+  static constexpr std::array<std::int16_t, Sig::dim> index = [] {
+    std::array<std::int16_t, Sig::dim> ix{};
+    for (auto& v : ix) v = -1;
+    for (int i = 0; i < size; ++i) ix[blades[i]] = std::int16_t(i);
+    return ix;
+  }();
+};
+
+template <class Sig, Op op> constexpr int termSign(Blade a, Blade b) {
+  switch (op) {
+    case Op::Geometric: return Sig::productSign(a, b);
+    case Op::Outer: return Sig::outerSign(a, b);
+    case Op::LeftContraction: return (a & ~b) == 0 ? Sig::productSign(a, b) : 0;
+    case Op::RightContraction: return (b & ~a) == 0 ? Sig::productSign(a, b) : 0;
+    case Op::Scalar: return a == b ? Sig::productSign(a, b) : 0;
+    case Op::Regressive: return Sig::regressiveSign(a, b);
+  }
+  return 0;
+}
+template <Op op> constexpr Blade termBlade(Blade a, Blade b) {
+  return op == Op::Regressive ? (a & b) : (a ^ b);
+}
+
+struct Term {
+  std::uint16_t i, j, k;
+  std::int8_t s;
+};
+
+/// The nonzero terms of product `op` between masks A and B, and the grades they reach.
+template <class Sig, Op op, GradeMask A, GradeMask B> struct ProductTable {
+  using LA = Layout<Sig, A>;
+  using LB = Layout<Sig, B>;
+  struct Shape {
+    GradeMask mask;
+    int count;
+  };
+  static constexpr Shape shape = [] {
+    Shape sh{0, 0};
+    for (int i = 0; i < LA::size; ++i)
+      for (int j = 0; j < LB::size; ++j)
+        if (termSign<Sig, op>(LA::blades[i], LB::blades[j]) != 0) {
+          sh.mask |= gradeBit(bladeGrade(termBlade<op>(LA::blades[i], LB::blades[j])));
+          ++sh.count;
+        }
+    return sh;
+  }();
+  static constexpr GradeMask result = shape.mask;
+  using LR = Layout<Sig, result>;
+  static constexpr std::array<Term, shape.count> terms = [] {
+    std::array<Term, shape.count> t{};
+    int c = 0;
+    for (int i = 0; i < LA::size; ++i)
+      for (int j = 0; j < LB::size; ++j) {
+        const Blade a = LA::blades[i], b = LB::blades[j];
+        const int s = termSign<Sig, op>(a, b);
+        if (s != 0)
+          t[c++] = Term{std::uint16_t(i), std::uint16_t(j),
+                        std::uint16_t(LR::index[termBlade<op>(a, b)]), std::int8_t(s)};
+      }
+    return t;
+  }();
+};
+
+}  // namespace detail
+
+template <class Sig, class S, GradeMask M = Sig::allGrades> class Multivector {
+  static_assert((M & ~Sig::allGrades) == 0, "Multivector: grade mask has grades above n");
+
+ public:
+  using Signature = Sig;
+  using Scalar = S;
+  using Layout = detail::Layout<Sig, M>;
+  static constexpr GradeMask mask = M;
+  static constexpr int size = Layout::size;
+
+  Multivector() { c_.fill(S(0)); }
+  /// A scalar (requires grade 0 in the mask).
+  explicit Multivector(const S& s)
+    requires((M & 1) != 0)
+  {
+    c_.fill(S(0));
+    c_[0] = s;
+  }
+  /// Widening from a multivector whose grades are a subset of ours (e.g. Bivector → Even).
+  template <GradeMask M2>
+    requires((M2 & ~M) == 0 && M2 != M)
+  Multivector(const Multivector<Sig, S, M2>& o) {
+    c_.fill(S(0));
+    for (int i = 0; i < o.size; ++i) c_[Layout::index[o.blade(i)]] = o[i];
+  }
+
+  static Multivector zero() { return Multivector(); }
+  /// v · (basis blade b); InvalidInput if the grade of b is not stored by this type.
+  static Multivector basisBlade(Blade b, const S& v = S(1)) {
+    Multivector m;
+    m.setCoeff(b, v);
+    return m;
+  }
+  /// The generator e_i, i ∈ [0, n).
+  static Multivector generator(int i) {
+    if (i < 0 || i >= Sig::n)
+      throw InvalidInput("clifford generator index " + std::to_string(i) + " is outside [0, " +
+                         std::to_string(Sig::n) + ")");
+    return basisBlade(Blade(1) << i);
+  }
+
+  /// Coefficient by storage index (blade(i) tells which blade).
+  S& operator[](int i) { return c_[i]; }
+  const S& operator[](int i) const { return c_[i]; }
+  static constexpr Blade blade(int i) { return Layout::blades[i]; }
+  /// Coefficient of basis blade b (0 if its grade is not stored).
+  S coeff(Blade b) const {
+    const int i = b < Blade(Sig::dim) ? Layout::index[b] : -1;
+    return i < 0 ? S(0) : c_[i];
+  }
+  void setCoeff(Blade b, const S& v) {
+    const int i = b < Blade(Sig::dim) ? Layout::index[b] : -1;
+    if (i < 0)
+      throw InvalidInput("clifford blade " + std::to_string(b) + " (grade " +
+                         std::to_string(bladeGrade(b)) + ") is not stored by this grade mask");
+    c_[i] = v;
+  }
+  const std::array<S, size>& coeffs() const { return c_; }
+  S scalarPart() const { return coeff(0); }
+
+  /// Grade projection onto the grades in M2 (GF §9.1 grading): a new type with mask M2 ∩ M.
+  template <GradeMask M2> Multivector<Sig, S, M2 & M> grades() const {
+    Multivector<Sig, S, M2 & M> out;
+    for (int i = 0; i < out.size; ++i) out[i] = c_[Layout::index[out.blade(i)]];
+    return out;
+  }
+  /// ⟨a⟩_k as a grade-k type.
+  template <int k> auto grade() const { return grades<gradeBit(k)>(); }
+  /// ⟨a⟩_k keeping this type (runtime k).
+  Multivector gradeProject(int k) const {
+    Multivector out;
+    for (int i = 0; i < size; ++i)
+      if (bladeGrade(blade(i)) == k) out.c_[i] = c_[i];
+    return out;
+  }
+
+  /// Reverse ã: (e_i…e_k)~ = e_k…e_i, sign (−1)^{k(k−1)/2} on grade k.
+  Multivector reverse() const { return withGradeSigns(reverseSign); }
+  /// Grade (main) involution α: e_i ↦ −e_i, an automorphism (GF-9.1-conjugation-involution).
+  Multivector involute() const { return withGradeSigns(involutionSign); }
+  /// Clifford conjugation c* = α(c̃), the anti-involution of GF §9.1 (e_i* = −e_i).
+  Multivector conjugate() const { return withGradeSigns(conjugationSign); }
+  Multivector operator~() const { return reverse(); }
+
+  Multivector operator-() const {
+    Multivector o;
+    for (int i = 0; i < size; ++i) o.c_[i] = -c_[i];
+    return o;
+  }
+  Multivector& operator+=(const Multivector& o) {
+    for (int i = 0; i < size; ++i) c_[i] += o.c_[i];
+    return *this;
+  }
+  Multivector& operator-=(const Multivector& o) {
+    for (int i = 0; i < size; ++i) c_[i] -= o.c_[i];
+    return *this;
+  }
+  Multivector& operator*=(const S& s) {
+    for (auto& v : c_) v *= s;
+    return *this;
+  }
+  Multivector& operator/=(const S& s) {
+    for (auto& v : c_) v /= s;
+    return *this;
+  }
+
+  /// Largest |coefficient| (a basis-dependent size, for tolerances and tests).
+  S maxAbs() const {
+    using std::abs;
+    S m(0);
+    for (const auto& v : c_)
+      if (abs(v) > m) m = abs(v);
+    return m;
+  }
+  /// Same element with the coefficients converted to scalar T.
+  template <class T> Multivector<Sig, T, M> cast() const {
+    Multivector<Sig, T, M> o;
+    for (int i = 0; i < size; ++i) o[i] = scalarCast<T>(c_[i]);
+    return o;
+  }
+
+ private:
+  Multivector withGradeSigns(int (*sign)(int)) const {
+    Multivector o;
+    for (int i = 0; i < size; ++i) o.c_[i] = sign(bladeGrade(blade(i))) < 0 ? -c_[i] : c_[i];
+    return o;
+  }
+  std::array<S, size> c_;
+};
+
+template <class Sig, class S> using Dense = Multivector<Sig, S, Sig::allGrades>;
+template <class Sig, class S> using ScalarMV = Multivector<Sig, S, gradeBit(0)>;
+template <class Sig, class S> using Vector = Multivector<Sig, S, gradeBit(1)>;
+template <class Sig, class S> using Bivector = Multivector<Sig, S, gradeBit(2)>;
+template <class Sig, class S> using Trivector = Multivector<Sig, S, gradeBit(3)>;
+/// The even subalgebra Cl⁺: rotors, motors, Spin groups (GF §9.1).
+template <class Sig, class S> using Even = Multivector<Sig, S, Sig::evenGrades>;
+template <class Sig, class S> using Odd = Multivector<Sig, S, Sig::oddGrades>;
+
+/// Generic bilinear product `op` (see the operator map at the top of this file).
+template <Op op, class Sig, class S, GradeMask A, GradeMask B>
+auto product(const Multivector<Sig, S, A>& a, const Multivector<Sig, S, B>& b) {
+  using T = detail::ProductTable<Sig, op, A, B>;
+  Multivector<Sig, S, T::result> out;
+  for (const auto& t : T::terms) {
+    if (t.s > 0)
+      out[t.k] += a[t.i] * b[t.j];
+    else
+      out[t.k] -= a[t.i] * b[t.j];
+  }
+  return out;
+}
+
+/// Geometric product (GF §9.1: e_i e_j + e_j e_i = 2 Q_ij).
+template <class Sig, class S, GradeMask A, GradeMask B>
+auto geometric(const Multivector<Sig, S, A>& a, const Multivector<Sig, S, B>& b) {
+  return product<Op::Geometric>(a, b);
+}
+/// Exterior product a ∧ b, metric-free (GF-9.1-exterior-product).
+template <class Sig, class S, GradeMask A, GradeMask B>
+auto outer(const Multivector<Sig, S, A>& a, const Multivector<Sig, S, B>& b) {
+  return product<Op::Outer>(a, b);
+}
+/// Regressive product a ∨ b = lc(rc(a) ∧ rc(b)), rc/lc the right/left complements on the basis
+/// (a ∧ rc(a) = I, lc(a) ∧ a = I). Needs no metric, so it works in degenerate Cl(0,3,1) and
+/// Cl(0,6,2) (SB's join). I ∨ b = b and a ∨ I = a.
+template <class Sig, class S, GradeMask A, GradeMask B>
+auto regressive(const Multivector<Sig, S, A>& a, const Multivector<Sig, S, B>& b) {
+  return product<Op::Regressive>(a, b);
+}
+/// Left contraction a ⌋ b: for blades, the geometric product when a's factors ⊆ b's, else 0.
+template <class Sig, class S, GradeMask A, GradeMask B>
+auto leftContraction(const Multivector<Sig, S, A>& a, const Multivector<Sig, S, B>& b) {
+  return product<Op::LeftContraction>(a, b);
+}
+/// Right contraction a ⌊ b: for blades, the geometric product when b's factors ⊆ a's, else 0.
+template <class Sig, class S, GradeMask A, GradeMask B>
+auto rightContraction(const Multivector<Sig, S, A>& a, const Multivector<Sig, S, B>& b) {
+  return product<Op::RightContraction>(a, b);
+}
+/// Scalar product ⟨a b⟩₀.
+template <class Sig, class S, GradeMask A, GradeMask B>
+S scalarProduct(const Multivector<Sig, S, A>& a, const Multivector<Sig, S, B>& b) {
+  return product<Op::Scalar>(a, b).scalarPart();
+}
+
+template <class Sig, class S, GradeMask A, GradeMask B>
+auto operator*(const Multivector<Sig, S, A>& a, const Multivector<Sig, S, B>& b) {
+  return product<Op::Geometric>(a, b);
+}
+template <class Sig, class S, GradeMask A, GradeMask B>
+auto operator^(const Multivector<Sig, S, A>& a, const Multivector<Sig, S, B>& b) {
+  return product<Op::Outer>(a, b);
+}
+template <class Sig, class S, GradeMask A, GradeMask B>
+auto operator&(const Multivector<Sig, S, A>& a, const Multivector<Sig, S, B>& b) {
+  return product<Op::Regressive>(a, b);
+}
+template <class Sig, class S, GradeMask A, GradeMask B>
+auto operator|(const Multivector<Sig, S, A>& a, const Multivector<Sig, S, B>& b) {
+  return product<Op::LeftContraction>(a, b);
+}
+
+template <class Sig, class S, GradeMask A, GradeMask B>
+Multivector<Sig, S, A | B> operator+(const Multivector<Sig, S, A>& a,
+                                     const Multivector<Sig, S, B>& b) {
+  Multivector<Sig, S, A | B> out(a);
+  out += Multivector<Sig, S, A | B>(b);
+  return out;
+}
+template <class Sig, class S, GradeMask A, GradeMask B>
+Multivector<Sig, S, A | B> operator-(const Multivector<Sig, S, A>& a,
+                                     const Multivector<Sig, S, B>& b) {
+  Multivector<Sig, S, A | B> out(a);
+  out -= Multivector<Sig, S, A | B>(b);
+  return out;
+}
+template <class Sig, class S, GradeMask A>
+Multivector<Sig, S, A | 1> operator+(const Multivector<Sig, S, A>& a,
+                                     const std::type_identity_t<S>& s) {
+  Multivector<Sig, S, A | 1> out(a);
+  out[0] += s;
+  return out;
+}
+template <class Sig, class S, GradeMask A>
+Multivector<Sig, S, A | 1> operator+(const std::type_identity_t<S>& s,
+                                     const Multivector<Sig, S, A>& a) {
+  return a + s;
+}
+template <class Sig, class S, GradeMask A>
+Multivector<Sig, S, A | 1> operator-(const Multivector<Sig, S, A>& a,
+                                     const std::type_identity_t<S>& s) {
+  Multivector<Sig, S, A | 1> out(a);
+  out[0] -= s;
+  return out;
+}
+template <class Sig, class S, GradeMask A>
+Multivector<Sig, S, A> operator*(Multivector<Sig, S, A> a, const std::type_identity_t<S>& s) {
+  return a *= s;
+}
+template <class Sig, class S, GradeMask A>
+Multivector<Sig, S, A> operator*(const std::type_identity_t<S>& s, Multivector<Sig, S, A> a) {
+  return a *= s;
+}
+template <class Sig, class S, GradeMask A>
+Multivector<Sig, S, A> operator/(Multivector<Sig, S, A> a, const std::type_identity_t<S>& s) {
+  return a /= s;
+}
+
+/// max |a_i − b_i| over all blades (masks may differ).
+template <class Sig, class S, GradeMask A, GradeMask B>
+S maxAbsDiff(const Multivector<Sig, S, A>& a, const Multivector<Sig, S, B>& b) {
+  return (a - b).maxAbs();
+}
+
+/// ⟨a ã⟩₀, signed: for a vector x of Cl(0,n,0) this is x² = −|x|², for a rotor of Cl(0,3,0)
+/// it is a₀² + |a|². In degenerate algebras the null parts do not contribute.
+template <class Sig, class S, GradeMask A> S norm2(const Multivector<Sig, S, A>& a) {
+  return scalarProduct(a, a.reverse());
+}
+/// sqrt|⟨a ã⟩₀|.
+template <class Sig, class S, GradeMask A> S norm(const Multivector<Sig, S, A>& a) {
+  using std::abs;
+  using std::sqrt;
+  return sqrt(abs(norm2(a)));
+}
+
+/// Inverse of a versor (an element with a ã a nonzero scalar: rotors, motors, invertible
+/// vectors): ã / (a ã), same grades as a. InvalidInput when a ã is not a nonzero scalar.
+template <class Sig, class S, GradeMask A>
+Multivector<Sig, S, A> versorInverse(const Multivector<Sig, S, A>& a) {
+  using std::abs;
+  const auto r = a.reverse();
+  const auto aa = a * r;
+  const S s = aa.scalarPart();
+  const S scale = a.maxAbs() * a.maxAbs();
+  const S rest = (aa - s).maxAbs();
+  if (!(abs(s) > Tolerance<S>::rank() * scale) || rest > Tolerance<S>::input() * scale)
+    throw InvalidInput("clifford versorInverse: a·reverse(a) = " + soma::toString(s) +
+                       " + (non-scalar part of size " + soma::toString(rest) +
+                       ") is not a nonzero scalar, so the element is not an invertible versor");
+  return r / s;
+}
+
+/// The 2^n × 2^n matrix of left multiplication x ↦ a x on the dense basis.
+template <class Sig, class S, GradeMask A>
+Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> leftMultiplicationMatrix(
+    const Multivector<Sig, S, A>& a) {
+  using L = detail::Layout<Sig, Sig::allGrades>;
+  Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> m =
+      Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>::Zero(Sig::dim, Sig::dim);
+  for (int i = 0; i < a.size; ++i)
+    for (int j = 0; j < L::size; ++j) {
+      const Blade bi = a.blade(i), bj = L::blades[j];
+      const int s = Sig::productSign(bi, bj);
+      if (s > 0) m(L::index[bi ^ bj], j) += a[i];
+      if (s < 0) m(L::index[bi ^ bj], j) -= a[i];
+    }
+  return m;
+}
+
+/// General inverse: solves a x = 1 with the left-multiplication matrix (full-pivot LU, rank
+/// threshold Tolerance<S>::rank()). In a finite-dimensional algebra a left inverse is two-sided.
+/// InvalidInput for zero divisors (GF-9.1-zero-divisor) and null elements.
+template <class Sig, class S, GradeMask A> Dense<Sig, S> inverse(const Multivector<Sig, S, A>& a) {
+  const auto m = leftMultiplicationMatrix(a);
+  Eigen::FullPivLU<Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>> lu(m);
+  lu.setThreshold(Tolerance<S>::rank());
+  if (!lu.isInvertible())
+    throw InvalidInput("clifford inverse: the element has no inverse (its left-multiplication "
+                       "matrix has rank " + std::to_string(lu.rank()) + " < " +
+                       std::to_string(Sig::dim) + "; a zero divisor or a null element)");
+  Eigen::Matrix<S, Eigen::Dynamic, 1> one = Eigen::Matrix<S, Eigen::Dynamic, 1>::Zero(Sig::dim);
+  one(0) = S(1);
+  const Eigen::Matrix<S, Eigen::Dynamic, 1> x = lu.solve(one);
+  Dense<Sig, S> out;
+  for (int i = 0; i < out.size; ++i) out[i] = x(i);  // dense layout index 0 is the scalar
+  return out;
+}
+
+/// Exponential of a bivector B, an element of the even subalgebra.
+/// Closed form when B² = a + R with R (the grade-4 part) zero — simple bivectors, all bivectors
+/// for n ≤ 3 — or R nilpotent and commuting with B — all bivectors of Cl(0,3,1) (R ∝ the null
+/// pseudoscalar, the dual-angle case of GF-9.3-exp-log):
+///   exp B = C(a) + S(a)/2 R + S(a) B + G(a) R B,
+///   C = cos θ, S = sin θ/θ, G = (sin θ − θ cos θ)/(2θ³) with θ² = −a (cosh/sinh for a > 0),
+/// each replaced by its Taylor series in a for |a| < Tolerance<S>::precision(3) (error < ε).
+/// Otherwise: scaling and squaring (argument scaled below 1/2) with the Taylor series summed until
+/// the next term is below Tolerance<S>::epsilon() relative to the sum.
+template <class Sig, class S, GradeMask M> Even<Sig, S> exp(const Multivector<Sig, S, M>& B) {
+  static_assert(M == gradeBit(2), "clifford exp: the argument must be a Bivector");
+  using std::abs;
+  using std::cos;
+  using std::cosh;
+  using std::sin;
+  using std::sinh;
+  using std::sqrt;
+  using E = Even<Sig, S>;
+  const auto B2 = B * B;  // grades 0, 4 (the grade-2 part is a commutator, identically 0)
+  const S a = B2.scalarPart();
+  const auto R = B2.template grades<gradeBit(4)>();
+  const S b = B.maxAbs();
+  const S scale = b * b > S(1) ? b * b : S(1);
+  const S tol = Tolerance<S>::identity() * scale;
+  bool closed = R.maxAbs() <= tol;
+  if (!closed) {
+    const auto RR = R * R;
+    const auto comm = R * B - B * R;
+    closed = RR.maxAbs() <= tol * scale && comm.maxAbs() <= tol * b;
+  }
+  if (closed) {
+    S c, s, g;
+    if (abs(a) < Tolerance<S>::precision(3)) {
+      c = S(1) + a / S(2) + a * a / S(24) + a * a * a / S(720);
+      s = S(1) + a / S(6) + a * a / S(120) + a * a * a / S(5040);
+      g = S(1) / S(6) + a / S(60) + a * a / S(1680) + a * a * a / S(90720);
+    } else if (a < S(0)) {
+      const S th = sqrt(-a);
+      c = cos(th);
+      s = sin(th) / th;
+      g = (sin(th) - th * cos(th)) / (S(2) * th * th * th);
+    } else {
+      const S mu = sqrt(a);
+      c = cosh(mu);
+      s = sinh(mu) / mu;
+      g = (mu * cosh(mu) - sinh(mu)) / (S(2) * mu * mu * mu);
+    }
+    E out(E(c) + E(R * (s / S(2))) + E(B * s));
+    out += E((R * B) * g);
+    return out;
+  }
+  // Series with scaling and squaring.
+  int k = 0;
+  S bs = b;
+  while (bs > S(1) / S(2)) {
+    bs /= S(2);
+    ++k;
+  }
+  S factor(1);
+  for (int i = 0; i < k; ++i) factor *= S(2);
+  const auto X = B / factor;
+  E sum(S(1)), term(S(1));
+  for (int m = 1; m < 1000; ++m) {
+    term = E(term * X) / S(m);
+    sum += term;
+    if (term.maxAbs() <= Tolerance<S>::epsilon() * sum.maxAbs()) break;
+  }
+  for (int i = 0; i < k; ++i) sum = E(sum * sum);
+  return sum;
+}
+
+/// "2 + 3 e0 - e01" style text (blade names list generator indices).
+template <class Sig, class S, GradeMask A> std::string toString(const Multivector<Sig, S, A>& a) {
+  std::ostringstream os;
+  bool first = true;
+  for (int i = 0; i < a.size; ++i) {
+    if (a[i] == S(0)) continue;
+    if (!first) os << " + ";
+    first = false;
+    os << soma::toString(a[i]);
+    if (a.blade(i) != 0) {
+      os << " e";
+      for (int g = 0; g < Sig::n; ++g)
+        if (a.blade(i) & (Blade(1) << g)) os << g;
+    }
+  }
+  if (first) os << "0";
+  return os.str();
+}
+
+}  // namespace soma::clifford
