@@ -4,6 +4,8 @@
 // vs θ on a log axis, drawn with soma::render as a 2-D plot.
 #include "gf04_common.hpp"
 
+#include "soma/algebra/log_accuracy.hpp"
+
 #include "soma/render/render.hpp"
 
 #include <cmath>
@@ -172,6 +174,15 @@ void logAccuracy(Context& c) {
              "≤ 4 ulps", toString(w.ulps, 3) + " ulps at θ = " + (w.theta > 1.5 ? "π − " + toString(w.delta, 2) : toString(w.theta, 3)),
              w.ulps, 4.0, w.ulps <= 4.0);
   }
+  // Cross-check with the library's own sweep (algebra/log_accuracy.hpp, another sampling and
+  // another seed): the two independent measurements must agree that the error is a few ulps.
+  const LogAccuracy libD = worstLogError<double>(300), libQ = worstLogError<__float128>(300);
+  c.record("soma::worstLogError<double>(300) (independent sweep in algebra/)", "≤ 4 ulps",
+           toString(libD.worstUlps, 3) + " ulps at θ = " + toString(libD.worstTheta, 3), libD.worstUlps, 4.0,
+           libD.worstUlps <= 4.0);
+  c.record("soma::worstLogError<float128>(300)", "≤ 4 ulps",
+           toString(libQ.worstUlps, 3) + " ulps at θ = " + toString(libQ.worstTheta, 3), libQ.worstUlps, 4.0,
+           libQ.worstUlps <= 4.0);
   c.note("Method: X = (exp(θâ), t) built in the scalar type, SE3::log in that type, reference in mpfr (≥ 320 bits) "
          "from the same quaternion and translation: ω = 2 atan2(|q_v|, q_w) q_v/|q_v|, v = Jl(ω)⁻¹t with Jl by its "
          "power series. Error = max(‖Δω‖∞/‖ω‖∞, ‖Δv‖∞/‖v‖∞)/ε.");
