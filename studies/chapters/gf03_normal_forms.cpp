@@ -210,9 +210,10 @@ template <class S> void symmetricInertia(Context& c) {
   const S tol = Tolerance<S>::identity(512);
   const int n = 5;
   // M with eigenvalues (3, 1, −2, 0, 0): rank 3, semi-index 1.
-  MatX<S> q = MatX<S>::Identity(n, n);
-  q.block(0, 0, 3, 3) = SO3<S>::Random(g).matrix();
-  q.block(2, 2, 3, 3) = q.block(2, 2, 3, 3) * SO3<S>::Random(g).matrix();
+  MatX<S> q1 = MatX<S>::Identity(n, n), q2 = MatX<S>::Identity(n, n);
+  q1.block(0, 0, 3, 3) = SO3<S>::Random(g).matrix();
+  q2.block(2, 2, 3, 3) = SO3<S>::Random(g).matrix();
+  const MatX<S> q = q1 * q2;  // orthogonal
   const VecX<S> ev = (VecX<S>(n) << S(3), S(1), S(-2), S(0), S(0)).finished();
   const MatX<S> m = q * ev.asDiagonal() * q.transpose();
   Eigen::SelfAdjointEigenSolver<MatX<S>> es(m);
