@@ -29,6 +29,7 @@
 #include <sstream>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 namespace soma::clifford {
 
@@ -84,15 +85,59 @@ struct Term {
   std::int8_t s;
 };
 
-/// The nonzero terms of product `op` between masks A and B, and the grades they reach.
+/// Grades that product `op` of a grade-ga and a grade-gb blade can reach, from counting shared
+/// generators c: the product of blades sharing c generators has grade ga+gb−2c and is nonzero
+/// only if none of the shared ones is null (c ≤ p+q). O(n²), so result types cost no blade loop.
+template <class Sig, Op op> constexpr GradeMask resultGrades(GradeMask A, GradeMask B) {
+  constexpr int n = Sig::n, nn = Sig::p + Sig::q;
+  GradeMask m = 0;
+  for (int ga = 0; ga <= n; ++ga)
+    for (int gb = 0; gb <= n; ++gb) {
+      if (!(A & gradeBit(ga)) || !(B & gradeBit(gb))) continue;
+      switch (op) {
+        case Op::Geometric: {
+          const int lo = ga + gb - n > 0 ? ga + gb - n : 0;
+          int hi = ga < gb ? ga : gb;
+          if (hi > nn) hi = nn;
+          for (int c = lo; c <= hi; ++c) m |= gradeBit(ga + gb - 2 * c);
+          break;
+        }
+        case Op::Outer:
+          if (ga + gb <= n) m |= gradeBit(ga + gb);
+          break;
+        case Op::LeftContraction:
+          if (ga <= gb && ga <= nn) m |= gradeBit(gb - ga);
+          break;
+        case Op::RightContraction:
+          if (gb <= ga && gb <= nn) m |= gradeBit(ga - gb);
+          break;
+        case Op::Scalar:
+          if (ga == gb && ga <= nn) m |= gradeBit(0);
+          break;
+        case Op::Regressive:
+          if (ga + gb >= n) m |= gradeBit(ga + gb - n);
+          break;
+      }
+    }
+  return m;
+}
+
+/// The nonzero terms of product `op` between masks A and B. Small tables (|A|·|B| ≤ 4096 pairs,
+/// e.g. every product of Cl(0,3,1) or a motor product of Cl(0,6,2)) are built at compile time
+/// and checked there against resultGrades; larger ones (dense n ≥ 7) once at run time on first
+/// use, which keeps compile times of dense 256×256 products low.
 template <class Sig, Op op, GradeMask A, GradeMask B> struct ProductTable {
   using LA = Layout<Sig, A>;
   using LB = Layout<Sig, B>;
+  static constexpr GradeMask result = resultGrades<Sig, op>(A, B);
+  using LR = Layout<Sig, result>;
+  static constexpr bool atCompileTime = std::size_t(LA::size) * std::size_t(LB::size) <= 4096;
+
   struct Shape {
     GradeMask mask;
     int count;
   };
-  static constexpr Shape shape = [] {
+  static constexpr Shape shapeOf() {
     Shape sh{0, 0};
     for (int i = 0; i < LA::size; ++i)
       for (int j = 0; j < LB::size; ++j)
@@ -101,22 +146,41 @@ template <class Sig, Op op, GradeMask A, GradeMask B> struct ProductTable {
           ++sh.count;
         }
     return sh;
-  }();
-  static constexpr GradeMask result = shape.mask;
-  using LR = Layout<Sig, result>;
-  static constexpr std::array<Term, shape.count> terms = [] {
-    std::array<Term, shape.count> t{};
+  }
+  /// Writes the terms into t (an array or a vector large enough); returns how many.
+  template <class Out> static constexpr int fill(Out& t) {
     int c = 0;
     for (int i = 0; i < LA::size; ++i)
       for (int j = 0; j < LB::size; ++j) {
         const Blade a = LA::blades[i], b = LB::blades[j];
         const int s = termSign<Sig, op>(a, b);
         if (s != 0)
-          t[c++] = Term{std::uint16_t(i), std::uint16_t(j),
-                        std::uint16_t(LR::index[termBlade<op>(a, b)]), std::int8_t(s)};
+          t[std::size_t(c++)] = Term{std::uint16_t(i), std::uint16_t(j),
+                                     std::uint16_t(LR::index[termBlade<op>(a, b)]),
+                                     std::int8_t(s)};
       }
-    return t;
-  }();
+    return c;
+  }
+
+  static const auto& terms() {
+    if constexpr (atCompileTime) {
+      static constexpr Shape shape = shapeOf();
+      static_assert(shape.mask == result, "clifford: resultGrades disagrees with the blade table");
+      static constexpr auto table = [] {
+        std::array<Term, shape.count> t{};
+        fill(t);
+        return t;
+      }();
+      return table;
+    } else {
+      static const std::vector<Term> table = [] {
+        std::vector<Term> v(std::size_t(LA::size) * std::size_t(LB::size));
+        v.resize(std::size_t(fill(v)));
+        return v;
+      }();
+      return table;
+    }
+  }
 };
 
 }  // namespace detail
@@ -265,7 +329,7 @@ template <Op op, class Sig, class S, GradeMask A, GradeMask B>
 auto product(const Multivector<Sig, S, A>& a, const Multivector<Sig, S, B>& b) {
   using T = detail::ProductTable<Sig, op, A, B>;
   Multivector<Sig, S, T::result> out;
-  for (const auto& t : T::terms) {
+  for (const auto& t : T::terms()) {
     if (t.s > 0)
       out[t.k] += a[t.i] * b[t.j];
     else
