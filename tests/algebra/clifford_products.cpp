@@ -23,3 +23,11 @@ TEMPLATE_TEST_CASE("clifford products agree with a matrix representation and the
   checkAll<Signature<0, 3, 1>, S>(6);  // GF §9.2 Euclidean group
   checkAll<Signature<2, 2, 1>, S>(4);
 }
+
+TEMPLATE_TEST_CASE("clifford products in extended precision (small signatures)", "[clifford]",
+                   __float128, mpfr::mpreal) {
+  using S = TestType;
+  checkAll<Signature<0, 2, 0>, S>(2);
+  checkAll<Signature<0, 3, 1>, S>(2);
+  checkAll<Signature<1, 1, 1>, S>(2);
+}

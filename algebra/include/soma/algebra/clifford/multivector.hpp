@@ -122,16 +122,16 @@ template <class Sig, Op op> constexpr GradeMask resultGrades(GradeMask A, GradeM
   return m;
 }
 
-/// The nonzero terms of product `op` between masks A and B. Small tables (|A|·|B| ≤ 4096 pairs,
-/// e.g. every product of Cl(0,3,1) or a motor product of Cl(0,6,2)) are built at compile time
-/// and checked there against resultGrades; larger ones (dense n ≥ 7) once at run time on first
-/// use, which keeps compile times of dense 256×256 products low.
+/// The nonzero terms of product `op` between masks A and B. Small tables (|A|·|B| ≤ 1024 pairs,
+/// e.g. every product of Cl(0,3,1) and Cl(3,1,1)) are built at compile time and checked there
+/// against resultGrades; larger ones once at run time on first use (a function-local static),
+/// which keeps the compile time of dense 256×256 products low.
 template <class Sig, Op op, GradeMask A, GradeMask B> struct ProductTable {
   using LA = Layout<Sig, A>;
   using LB = Layout<Sig, B>;
   static constexpr GradeMask result = resultGrades<Sig, op>(A, B);
   using LR = Layout<Sig, result>;
-  static constexpr bool atCompileTime = std::size_t(LA::size) * std::size_t(LB::size) <= 4096;
+  static constexpr bool atCompileTime = std::size_t(LA::size) * std::size_t(LB::size) <= 1024;
 
   struct Shape {
     GradeMask mask;
