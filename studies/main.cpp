@@ -2,10 +2,12 @@
 //   soma study list [--json]
 //   soma study run ID... [--scalar T] [--bits N] [--out DIR] [--no-figures] [--json]
 //   soma report [--out DIR] [--only GLOB]... [--scalar T] [--bits N] [--no-figures]
+//   soma pose POSE.json [--scalar T] [--bits N] [--json]
 // Exit codes: 0 every check passed, 1 a check or study failed, 2 bad input (usage, unknown
 // study or scalar, unwritable output).
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/scalar.hpp"
+#include "soma/studies/pose_command.hpp"
 #include "soma/studies/report.hpp"
 #include "soma/studies/runner.hpp"
 
@@ -164,6 +166,19 @@ int main(int argc, char** argv) {
   addScalarOptions(rep, repScalar);
   rep->add_flag("--no-figures", repNoFigures, "skip figures");
 
+  // soma pose
+  std::string poseFile;
+  ScalarOptions poseScalar;
+  bool poseJson = false;
+  auto* pose = app.add_subcommand(
+      "pose", "one pose in every representation: matrix, quaternion, dual quaternion, Study "
+              "parameters, twist, screw, with round-trip residuals");
+  pose->add_option("file", poseFile, "pose JSON: {\"rotation\": [[3x3]] or \"quaternion\": "
+                                     "[w,x,y,z], \"translation\": [x,y,z]}")
+      ->required();
+  addScalarOptions(pose, poseScalar);
+  pose->add_flag("--json", poseJson, "print one JSON object");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -175,6 +190,7 @@ int main(int argc, char** argv) {
     if (list->parsed()) return studyList(listJson);
     if (run->parsed()) return studyRun(runIds, runScalar, runOut, !runNoFigures, runJson);
     if (rep->parsed()) return report(only, repScalar, repOut, !repNoFigures, commandLine(argc, argv));
+    if (pose->parsed()) return poseCommand(poseFile, applyScalar(poseScalar), poseJson, std::cout);
   } catch (const SelectionError& e) {
     std::cerr << "soma: " << e.what() << "\n";
     return kExitBadInput;

@@ -94,8 +94,8 @@ SOMA_STUDY({.id = "GF-2.4-direct-product-and-actions",
             .title = "Direct products; action axioms (A1)–(A3) on points, lines, se(3), the group",
             .source = "GF §2.4",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { actions<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { actions<double>(c); }});
 
 // ---- GF-2.4-semidirect-product ----------------------------------------------------------------
 /// The book's semi-direct product G ⋉ H of a group G acting linearly on a commutative H.
@@ -198,8 +198,8 @@ SOMA_STUDY({.id = "GF-2.4-semidirect-product",
             .title = "Semi-direct product G ⋉ H: axioms, SO(3) ⋉ R³ = SE(3), U(1) ⋉ R² = SE(2)",
             .source = "GF §2.4",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { semidirect<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { semidirect<double>(c); }});
 
 // ---- GF-2.4-similarity-congruence -------------------------------------------------------------
 // GF §2.4, GF-2.4-similarity-congruence: S(g, M) = gMg⁻¹ and C(g, M) = gMgᵀ are
@@ -281,8 +281,8 @@ SOMA_STUDY({.id = "GF-2.4-similarity-congruence",
             .title = "Similarity gMg⁻¹ and congruence gMgᵀ as representations; dim M^S(n)",
             .source = "GF §2.4",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { similarityCongruence<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { similarityCongruence<double>(c); }});
 
 // ---- GF-2.5.1-euclidean-pairs -----------------------------------------------------------------
 // GF §2.5.1, GF-2.5.1-euclidean-pairs: v' = Mv + t preserves |u − v|²;
@@ -332,8 +332,8 @@ SOMA_STUDY({.id = "GF-2.5.1-euclidean-pairs",
             .title = "Isometries as pairs (M, t): distance, product formula, E(n) vs SE(n)",
             .source = "GF §2.5.1",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { euclideanPairs<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { euclideanPairs<double>(c); }});
 
 // ---- GF-2.5.1-homogeneous ---------------------------------------------------------------------
 // GF §2.5.1, GF-2.5.1-homogeneous: (R, t) ↦ [[R, t], [0, 1]] is a homomorphism; the inverse is
@@ -389,8 +389,8 @@ SOMA_STUDY({.id = "GF-2.5.1-homogeneous",
             .title = "Homogeneous 4×4 representation of SE(3): product, inverse, action, z = 1 plane",
             .source = "GF §2.5.1",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { homogeneous<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { homogeneous<double>(c); }});
 
 // ---- GF-2.5.2-screw-motion-matrix -------------------------------------------------------------
 /// The book's screw motion about an axis through the origin, pitch p per TURN.
@@ -441,8 +441,8 @@ SOMA_STUDY({.id = "GF-2.5.2-screw-motion-matrix",
             .title = "Screw motion matrix about an axis through u (pitch per turn)",
             .source = "GF §2.5.2",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { screwMotionMatrix<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { screwMotionMatrix<double>(c); }});
 
 // ---- GF-2.5.2-chasles-decomposition -----------------------------------------------------------
 /// The book's constructive proof as an algorithm: θ, v̂ from R (via the logarithm, §4.4),
@@ -540,8 +540,8 @@ SOMA_STUDY({.id = "GF-2.5.2-chasles-decomposition",
             .title = "Chasles: the book's screw construction vs the se(3) logarithm",
             .source = "GF §2.5.2",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { chasles<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { chasles<double>(c); }});
 
 // ---- GF-2.5.3-active-passive ------------------------------------------------------------------
 // GF §2.5.3, GF-2.5.3-active-passive: coordinates in a frame (R, t) are p' = Rᵀp − Rᵀt, i.e.
@@ -583,8 +583,8 @@ SOMA_STUDY({.id = "GF-2.5.3-active-passive",
             .title = "Active vs passive: frame coordinates and change of frame X = F X' F⁻¹",
             .source = "GF §2.5.3",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { activePassive<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { activePassive<double>(c); }});
 
 }  // namespace
 }  // namespace soma::studies

@@ -110,8 +110,8 @@ SOMA_STUDY({.id = "GF-2.2.1-orthogonal-group",
             .title = "O(n): MᵀM = I, closure, det ±1; O(2) rotations and reflections",
             .source = "GF §2.2.1",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { orthogonalGroup<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { orthogonalGroup<double>(c); }});
 
 // ---- GF-2.2.2-SO3-from-quaternion -------------------------------------------------------------
 // GF §2.2.2, GF-2.2.2-SO3-from-quaternion: (w:x:y:z) ↦ R/Δ is orthogonal with det 1, scale-free,
@@ -175,8 +175,8 @@ SOMA_STUDY({.id = "GF-2.2.2-SO3-from-quaternion",
             .title = "The map PR³ → SO(3), (w:x:y:z) ↦ R/Δ",
             .source = "GF §2.2.2",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { so3FromQuaternion<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { so3FromQuaternion<double>(c); }});
 
 // ---- GF-2.2.2-SO3-to-quaternion-charts --------------------------------------------------------
 /// Chart 1 exactly as the seed prints it, including the OCR slip ½(r21 − r21) (erratum E2.1).
@@ -270,8 +270,8 @@ SOMA_STUDY({.id = "GF-2.2.2-SO3-to-quaternion-charts",
             .title = "Four charts SO(3) → PR³: printed charts fail (E2.1, E2.2), corrected invert",
             .source = "GF §2.2.2",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { so3Charts<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { so3Charts<double>(c); }});
 
 // ---- GF-2.2.3-symplectic ----------------------------------------------------------------------
 template <class S> MatX<S> symplecticJ(int n) {
@@ -360,8 +360,8 @@ SOMA_STUDY({.id = "GF-2.2.3-symplectic",
             .title = "Sp(2n, R): MᵀJM = J, det 1, closure, three constructions",
             .source = "GF §2.2.3",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { symplectic<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { symplectic<double>(c); }});
 
 // ---- GF-2.2.4-unitary -------------------------------------------------------------------------
 // GF §2.2.4, GF-2.2.4-unitary: M†M = I preserves z†w; |det M| = 1.
@@ -423,8 +423,8 @@ SOMA_STUDY({.id = "GF-2.2.4-unitary",
             .title = "U(n): M†M = I, invariance of z†w, |det M| = 1",
             .source = "GF §2.2.4",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { unitary<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { unitary<double>(c); }});
 
 // ---- GF-2.2.5-SU2-parametrisation -------------------------------------------------------------
 // GF §2.2.5, GF-2.2.5-SU2-parametrisation: [[a+ib, c+id], [−c+id, a−ib]] with
@@ -471,8 +471,8 @@ SOMA_STUDY({.id = "GF-2.2.5-SU2-parametrisation",
             .title = "SU(2) as [[a+ib, c+id], [−c+id, a−ib]], a²+b²+c²+d² = 1",
             .source = "GF §2.2.5",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { su2Parametrisation<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { su2Parametrisation<double>(c); }});
 
 // ---- GF-2.3-inclusions ------------------------------------------------------------------------
 // GF §2.3, GF-2.3-inclusions: x + yi ↦ x + yi + 0j + 0k; SO(n) → SO(n+1), M ↦ diag(M, 1);
@@ -520,8 +520,8 @@ SOMA_STUDY({.id = "GF-2.3-inclusions",
             .title = "Inclusions U(1) → S³, SO(n) → SO(n+1) are homomorphisms",
             .source = "GF §2.3",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { inclusions<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { inclusions<double>(c); }});
 
 // ---- GF-2.3-SU2-double-cover ------------------------------------------------------------------
 // GF §2.3, GF-2.3-SU2-double-cover: π: SU(2) → SO(3) is a homomorphism with π(−M) = π(M),
@@ -586,8 +586,8 @@ SOMA_STUDY({.id = "GF-2.3-SU2-double-cover",
             .title = "π: SU(2) → SO(3) is a double cover with kernel ±I and no section",
             .source = "GF §2.3",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { su2DoubleCover<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { su2DoubleCover<double>(c); }});
 
 // ---- GF-2.3-accidental-isomorphisms -----------------------------------------------------------
 // GF §2.3, GF-2.3-accidental-isomorphisms: U(1) ≅ SO(2), unit quaternions ≅ SU(2),
@@ -629,8 +629,8 @@ SOMA_STUDY({.id = "GF-2.3-accidental-isomorphisms",
             .title = "U(1) ≅ SO(2), unit quaternions ≅ SU(2), Sp(2, R) ≅ SL(2)",
             .source = "GF §2.3",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { accidentalIsomorphisms<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { accidentalIsomorphisms<double>(c); }});
 
 }  // namespace
 }  // namespace soma::studies

@@ -82,8 +82,8 @@ SOMA_STUDY({.id = "GF-3.1-image-kernel",
             .title = "Image and kernel of homomorphisms: ker π = {±I}, ker det = SU(n)",
             .source = "GF §3.1",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { imageKernel<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { imageKernel<double>(c); }});
 
 // ---- GF-3.1-conjugation -----------------------------------------------------------------------
 // GF §3.1, GF-3.1-conjugation: h_g(x) = gxg⁻¹ is an automorphism with inverse h_{g⁻¹}; its fixed
@@ -127,8 +127,8 @@ SOMA_STUDY({.id = "GF-3.1-conjugation",
             .title = "Conjugation h_g(x) = gxg⁻¹ is an automorphism; its pre-image (E3.1)",
             .source = "GF §3.1",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { conjugation<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { conjugation<double>(c); }});
 
 // ---- GF-3.1-metric-groups ---------------------------------------------------------------------
 // GF §3.1, GF-3.1-metric-groups: MᵀQM = Q; positive definite Q = PᵀP makes PMP⁻¹ orthogonal;
@@ -244,8 +244,8 @@ SOMA_STUDY({.id = "GF-3.1-metric-groups",
             .title = "Groups preserving a form: O(n) by conjugation, O(p,q), Lorentz, Sp",
             .source = "GF §3.1",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { metricGroups<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { metricGroups<double>(c); }});
 
 // ---- GF-3.2-cosets-hopf -----------------------------------------------------------------------
 /// Projective distance of two points of PC¹: |w1 z2 − w2 z1| after normalising both.
@@ -305,8 +305,8 @@ SOMA_STUDY({.id = "GF-3.2-cosets-hopf",
             .title = "Cosets: SU(2)/U(1) = PC¹ ≅ S² (the Hopf map)",
             .source = "GF §3.2",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { cosetsHopf<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { cosetsHopf<double>(c); }});
 
 // ---- GF-3.2-normal-subgroup-quotient ----------------------------------------------------------
 // GF §3.2, GF-3.2-normal-subgroup-quotient: SU(n) is normal in U(n) (det(PMP⁻¹) = det M) and
@@ -349,8 +349,8 @@ SOMA_STUDY({.id = "GF-3.2-normal-subgroup-quotient",
             .title = "Normal subgroup SU(n) ◁ U(n) and the quotient U(n)/SU(n) = U(1)",
             .source = "GF §3.2",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { normalQuotient<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { normalQuotient<double>(c); }});
 
 // ---- GF-3.3-isotropy-orbit --------------------------------------------------------------------
 // GF §3.3, GF-3.3-isotropy-orbit: the isotropy group of a point under SE(3) is the SO(3) of
@@ -414,8 +414,8 @@ SOMA_STUDY({.id = "GF-3.3-isotropy-orbit",
             .title = "Isotropy groups and orbits; the action of G on G/H",
             .source = "GF §3.3",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { isotropyOrbit<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { isotropyOrbit<double>(c); }});
 
 // ---- GF-3.3-projective-group ------------------------------------------------------------------
 // GF §3.3, GF-3.3-projective-group: GL(n+1) acts on PRⁿ; the scalars D(λ) act trivially and are
@@ -484,8 +484,8 @@ SOMA_STUDY({.id = "GF-3.3-projective-group",
             .title = "Projective groups PGL(n) = GL(n+1)/GL(1) acting on PRⁿ",
             .source = "GF §3.3",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { projectiveGroup<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { projectiveGroup<double>(c); }});
 
 }  // namespace
 }  // namespace soma::studies

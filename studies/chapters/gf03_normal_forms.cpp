@@ -181,8 +181,8 @@ SOMA_STUDY({.id = "GF-3.4-rational-jordan-segre",
             .title = "Jordan and rational normal forms; the Segre symbol [(1),(21)]",
             .source = "GF §3.4",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { rationalJordanSegre<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { rationalJordanSegre<double>(c); }});
 
 // ---- GF-3.4-symmetric-forms-inertia -----------------------------------------------------------
 /// (rank, semi-index) of a symmetric matrix from its eigenvalues, with a threshold relative to
@@ -306,8 +306,8 @@ SOMA_STUDY({.id = "GF-3.4-symmetric-forms-inertia",
             .title = "Symmetric forms: orthogonal diagonalisation, Sylvester inertia, skew normal form",
             .source = "GF §3.4",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { symmetricInertia<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { symmetricInertia<double>(c); }});
 
 // ---- GF-3.4-pair-of-forms ---------------------------------------------------------------------
 // GF §3.4, GF-3.4-pair-of-forms: for M1 positive definite, g = L⁻ᵀV gives (gᵀM1g, gᵀM2g) =
@@ -362,8 +362,8 @@ SOMA_STUDY({.id = "GF-3.4-pair-of-forms",
             .title = "A pair of forms (M1 > 0, M2): normal form (I, D(λ)) and erratum E3.2",
             .source = "GF §3.4",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { pairOfForms<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { pairOfForms<double>(c); }});
 
 // ---- GF-3.4-pencil-mobius ---------------------------------------------------------------------
 // GF §3.4, GF-3.4-pencil-mobius: changing the basis of a pencil, (M̃1, M̃2) = (aM1 + bM2,
@@ -420,8 +420,8 @@ SOMA_STUDY({.id = "GF-3.4-pencil-mobius",
             .title = "Pencils: a change of basis moves eigenvalues by a Möbius map",
             .source = "GF §3.4",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { pencilMobius<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { pencilMobius<double>(c); }});
 
 }  // namespace
 }  // namespace soma::studies

@@ -80,8 +80,8 @@ SOMA_STUDY({.id = "GF-3.7-joint-matrices",
             .title = "Joint matrices X_p(θ), X_t(θ) as one-parameter subgroups",
             .source = "GF §3.7",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { jointMatrices<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { jointMatrices<double>(c); }});
 
 // ---- GF-3.7-offset-revolute-example -----------------------------------------------------------
 /// The matrix as the book prints it (erratum E3.3: the (2,4) entry should be −sin θ).
@@ -130,8 +130,8 @@ SOMA_STUDY({.id = "GF-3.7-offset-revolute-example",
             .title = "Revolute about the x-parallel line through (0,1,0): erratum E3.3",
             .source = "GF §3.7",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { offsetRevolute<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { offsetRevolute<double>(c); }});
 
 // ---- forward kinematics scaffolding -----------------------------------------------------------
 /// A standard DH row A = Rz(θ)·Tz(d)·Tx(a)·Rx(α); the joint variable adds to θ (R) or d (P).
@@ -243,8 +243,8 @@ SOMA_STUDY({.id = "GF-3.7-forward-kinematics",
             .title = "Forward kinematics K(θ) = A1(θ1)⋯A6(θ6) vs the DH product",
             .source = "GF §3.7",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { forwardKinematics<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { forwardKinematics<double>(c); }});
 
 // ---- GF-3.7-tool-frame-and-relative-moves -----------------------------------------------------
 // GF §3.7, GF-3.7-tool-frame-and-relative-moves: (K(θ)B)⁻¹ = B⁻¹A_6(−θ6)⋯A_1(−θ1); a passive
@@ -328,8 +328,8 @@ SOMA_STUDY({.id = "GF-3.7-tool-frame-and-relative-moves",
             .title = "Tool-frame kinematics, passive targets and moves in the tool frame",
             .source = "GF §3.7",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { toolFrame<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { toolFrame<double>(c); }});
 
 }  // namespace
 }  // namespace soma::studies

@@ -80,8 +80,8 @@ SOMA_STUDY({.id = "GF-3.5-translations-normal",
             .title = "The translations R³ form a normal subgroup of SE(3); SE(3)/R³ = SO(3)",
             .source = "GF §3.5",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { translationsNormal<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { translationsNormal<double>(c); }});
 
 // ---- GF-3.5-subgroups-of-R3-and-SO3 -----------------------------------------------------------
 // GF §3.5, GF-3.5-subgroups-of-R3-and-SO3: the closed subgroups of R³ are Z^k × R^m (k + m ≤ 3,
@@ -155,8 +155,8 @@ SOMA_STUDY({.id = "GF-3.5-subgroups-of-R3-and-SO3",
             .title = "Subgroups of R³ and connected subgroups of SO(3); O(2)",
             .source = "GF §3.5",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { subgroupsR3SO3<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { subgroupsR3SO3<double>(c); }});
 
 // ---- GF-3.5-table-3.1-connected-subgroups -----------------------------------------------------
 // GF §3.5, GF-3.5-table-3.1-connected-subgroups: the Lie algebras of the subgroups in Table 3.1
@@ -238,8 +238,8 @@ SOMA_STUDY({.id = "GF-3.5-table-3.1-connected-subgroups",
             .title = "Table 3.1: the connected subgroups of SE(3) via closed subalgebras",
             .source = "GF §3.5",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { table31<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { table31<double>(c); }});
 
 // ---- GF-3.5-subgroup-intersection -------------------------------------------------------------
 // GF §3.5, GF-3.5-subgroup-intersection: rotations about p ∩ rotations about q = rotations about
@@ -296,8 +296,8 @@ SOMA_STUDY({.id = "GF-3.5-subgroup-intersection",
             .title = "Intersection of the rotation groups about two points",
             .source = "GF §3.5",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { subgroupIntersection<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { subgroupIntersection<double>(c); }});
 
 // ---- GF-3.6-reuleaux-lower-pairs --------------------------------------------------------------
 template <class S> struct LowerPair {
@@ -430,8 +430,8 @@ SOMA_STUDY({.id = "GF-3.6-reuleaux-lower-pairs",
             .title = "Reuleaux's six lower pairs as surfaces invariant under subgroups of SE(3)",
             .source = "GF §3.6",
             .chapter = kChapter,
-            .scalarGeneric = true,
-            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { reuleaux<S>(c); }); }});
+            .scalarGeneric = false,
+            .run = [](Context& c) { reuleaux<double>(c); }});
 
 }  // namespace
 }  // namespace soma::studies

@@ -10,8 +10,16 @@ namespace soma::studies {
 namespace {
 using json = nlohmann::json;
 
-template <class S> S number(const json& j, const std::string& where) {
-  if (j.is_number()) return scalarCast<S>(j.get<double>());
+/// Whether any non-integer JSON number (a double) was read: the data then carry double precision only.
+struct Precision {
+  bool sawDouble = false;
+};
+
+template <class S> S number(const json& j, const std::string& where, Precision& p) {
+  if (j.is_number()) {
+    if (j.is_number_float()) p.sawDouble = true;  // integers are exact in every scalar
+    return scalarCast<S>(j.get<double>());
+  }
   if (j.is_string()) {
     const std::string t = j.get<std::string>();
     try {
@@ -26,13 +34,19 @@ template <class S> S number(const json& j, const std::string& where) {
   throw InvalidInput(where + ": expected a number, got " + std::string(j.type_name()));
 }
 
-template <class S, int N> Eigen::Matrix<S, N, 1> vector(const json& j, const std::string& where) {
+template <class S, int N>
+Eigen::Matrix<S, N, 1> vector(const json& j, const std::string& where, Precision& p) {
   if (!j.is_array() || j.size() != std::size_t(N))
     throw InvalidInput(where + ": expected an array of " + std::to_string(N) + " numbers");
   Eigen::Matrix<S, N, 1> v;
-  for (int i = 0; i < N; ++i) v(i) = number<S>(j[i], where + "[" + std::to_string(i) + "]");
+  for (int i = 0; i < N; ++i) v(i) = number<S>(j[i], where + "[" + std::to_string(i) + "]", p);
   if (!allFinite(v)) throw InvalidInput(where + ": has a NaN or infinite entry");
   return v;
+}
+/// True when the numbers came (partly) as JSON doubles and S is finer than double: unit and
+/// orthogonality defects are then judged at double's input tolerance, the precision of the data.
+template <class S> bool inputIsDouble(const Precision& p) {
+  return p.sawDouble && digits<S>() > std::numeric_limits<double>::digits;
 }
 }  // namespace
 
@@ -49,22 +63,33 @@ template <class S> SE3<S> parsePose(const std::string& text, const std::string& 
       throw InvalidInput(origin + ": unknown field \"" + key +
                          "\" (a pose has \"rotation\" or \"quaternion\", and \"translation\")");
   if (!j.contains("translation")) throw InvalidInput(origin + ": missing \"translation\"");
-  const Vec3<S> t = vector<S, 3>(j["translation"], origin + ": translation");
+  Precision prec;
+  const Vec3<S> t = vector<S, 3>(j["translation"], origin + ": translation", prec);
   const bool hasR = j.contains("rotation"), hasQ = j.contains("quaternion");
   if (hasR == hasQ)
     throw InvalidInput(origin + ": give exactly one of \"rotation\" (3x3) and \"quaternion\" [w,x,y,z]");
   try {
     if (hasQ) {
-      const Vec4<S> q = vector<S, 4>(j["quaternion"], origin + ": quaternion");
-      return SE3<S>(SO3<S>::fromQuaternion(Quat<S>(q(0), q(1), q(2), q(3))), t);
+      const Vec4<S> qv = vector<S, 4>(j["quaternion"], origin + ": quaternion", prec);
+      const Quat<S> q(qv(0), qv(1), qv(2), qv(3));
+      if (!inputIsDouble<S>(prec)) return SE3<S>(SO3<S>::fromQuaternion(q), t);
+      // Judged at double precision (the data's), then taken exactly unit in S.
+      const Vec4<double> qd = castMatrix<double>(qv);
+      (void)SO3<double>::fromQuaternion(Quat<double>(qd(0), qd(1), qd(2), qd(3)));
+      return SE3<S>(SO3<S>::fromQuaternionUnchecked(q), t);
     }
     const json& r = j["rotation"];
     if (!r.is_array() || r.size() != 3)
       throw InvalidInput(origin + ": rotation: expected 3 rows of 3 numbers");
     Mat3<S> m;
     for (int i = 0; i < 3; ++i)
-      m.row(i) = vector<S, 3>(r[i], origin + ": rotation[" + std::to_string(i) + "]").transpose();
-    return SE3<S>(SO3<S>::fromMatrix(m), t);
+      m.row(i) =
+          vector<S, 3>(r[i], origin + ": rotation[" + std::to_string(i) + "]", prec).transpose();
+    if (!inputIsDouble<S>(prec)) return SE3<S>(SO3<S>::fromMatrix(m), t);
+    // Judged at double precision (the data's), then the rotation of m in S (Shepperd's chart,
+    // normalised): the data cannot be orthogonal to better than double's rounding.
+    (void)SO3<double>::fromMatrix(castMatrix<double>(m));
+    return SE3<S>(SO3<S>::fromQuaternionUnchecked(quaternionFromRotation(m)), t);
   } catch (const InvalidInput& e) {
     const std::string msg = e.what();
     if (msg.rfind(origin, 0) == 0) throw;

@@ -48,3 +48,23 @@ TEST_CASE("parsePose names the defect of bad input", "[pose]") {
                     Contains("quaternion is not unit"));
   CHECK_THROWS_WITH(readPose<S>("/nonexistent/pose.json"), Contains("cannot open"));
 }
+
+TEST_CASE("a rotation typed as doubles is accepted in mpfr, and taken exactly orthogonal", "[pose]") {
+  // cos 30° and sin 30° as JSON doubles: orthogonal to double precision only.
+  const std::string text = R"({"rotation": [[0.8660254037844387,-0.5,0],[0.5,0.8660254037844387,0],[0,0,1]],
+                               "translation": [0,0,0]})";
+  const auto g = parsePose<mpreal>(text, "p.json");
+  const Mat3<mpreal> r = g.rotation();
+  CHECK((r.transpose() * r - Mat3<mpreal>::Identity()).cwiseAbs().maxCoeff() <
+        mpreal(64) * Tolerance<mpreal>::epsilon());
+  CHECK(abs(r(0, 1) + mpreal("0.5")) < mpreal("1e-15"));
+  // Exact decimal strings are judged at mpfr's own tolerance: 16 digits are not enough.
+  CHECK_THROWS_WITH(parsePose<mpreal>(R"({"rotation": [["0.8660254037844387","-0.5",0],["0.5","0.8660254037844387",0],[0,0,1]],
+                                          "translation": ["0","0","0"]})", "p.json"),
+                    Contains("not orthogonal"));
+  // A defect beyond double's tolerance is rejected in every scalar.
+  CHECK_THROWS_WITH(parsePose<mpreal>(R"({"rotation": [[0.866,-0.5,0],[0.5,0.866,0],[0,0,1]], "translation": [0,0,0]})", "p.json"),
+                    Contains("not orthogonal"));
+  CHECK_THROWS_WITH(parsePose<__float128>(R"({"quaternion": [1, 0, 0, 1e-2], "translation": [0,0,0]})", "p.json"),
+                    Contains("not unit"));
+}

@@ -2,6 +2,8 @@
 // Reading a pose file (DESIGN §6): {"rotation": [[3x3]], "translation": [x, y, z]}, or with
 // "quaternion": [w, x, y, z] instead of "rotation". Numbers may be JSON numbers (read as double)
 // or decimal strings ("0.1"), which are parsed exactly into the scalar type (for mpfr/float128).
+// When JSON numbers (doubles) feed a finer scalar, the rotation is judged unit/orthogonal at
+// double's input tolerance (the precision of the data) and then taken exactly in the scalar.
 // Every defect is an InvalidInput naming the file and the field: never silently renormalised.
 #include "soma/algebra/se3.hpp"
 

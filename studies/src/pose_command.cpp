@@ -1,0 +1,120 @@
+#include "soma/studies/pose_command.hpp"
+
+#include "soma/algebra/dual_quaternion.hpp"
+#include "soma/algebra/screw.hpp"
+#include "soma/algebra/study_parameters.hpp"
+#include "soma/studies/pose_file.hpp"
+
+#include <chrono>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+namespace soma::studies {
+
+namespace {
+using json = nlohmann::json;
+
+template <class D> json toJson(const Eigen::MatrixBase<D>& m) {
+  json rows = json::array();
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    json row = json::array();
+    for (Eigen::Index j = 0; j < m.cols(); ++j) row.push_back(toString(m(i, j)));
+    rows.push_back(m.cols() == 1 ? row[0] : row);
+  }
+  return rows;
+}
+
+template <class D> std::string toText(const Eigen::MatrixBase<D>& v) {
+  std::string s = "[";
+  for (Eigen::Index i = 0; i < v.size(); ++i) s += (i ? ", " : "") + toString(v(i));
+  return s + "]";
+}
+
+template <class S> int run(const std::filesystem::path& file, bool asJson, std::ostream& out) {
+  using std::abs;
+  const auto t0 = std::chrono::steady_clock::now();
+  const SE3<S> g = readPose<S>(file);
+  const DualQuaternion<S> h = DualQuaternion<S>::fromSE3(g);
+  const StudyParameters<S> sp = StudyParameters<S>::fromSE3(g);
+  const SE3Tangent<S> xi = g.log();
+  const Screw<S> sc = screwOf(g);
+  // Round trips, each measured as the max-norm distance of the 4x4 matrices.
+  const Mat4<S> m = g.matrix();
+  auto dist = [&](const SE3<S>& x) { return (x.matrix() - m).template lpNorm<Eigen::Infinity>(); };
+  const S scale = S(1) + g.translation().template lpNorm<Eigen::Infinity>();
+  const S tol = Tolerance<S>::identity() * scale;
+  const S eExp = dist(xi.exp());
+  const S eDq = dist(h.toSE3());
+  const S eStudy = dist(sp.toSE3());
+  const S eScrew = dist(sc.pureTranslation
+                            ? SE3<S>(SO3<S>(), sc.translationDirection * sc.translationDistance)
+                            : screwMotion(sc.axis, sc.point, sc.pitch, sc.theta));
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const bool ok = eExp <= tol && eDq <= tol && eStudy <= tol && eScrew <= tol;
+  const Quat<S>& q = g.quaternion();
+  const Vec4<S> qv(q.w(), q.x(), q.y(), q.z());
+  if (asJson) {
+    json j = {{"input", file.string()},
+              {"scalar", std::string(scalarName<S>())},
+              {"seconds", secs},
+              {"matrix", toJson(m)},
+              {"quaternion_wxyz", toJson(qv)},
+              {"dual_quaternion", toJson(h.coeffs())},
+              {"study_parameters", toJson(sp.coeffs())},
+              {"study_condition", toString(sp.studyCondition())},
+              {"study_defect", toString(sp.studyDefect())},
+              {"twist", toJson(xi.coeffs())},
+              {"screw",
+               sc.pureTranslation
+                   ? json{{"pure_translation", true},
+                          {"direction", toJson(sc.translationDirection)},
+                          {"distance", toString(sc.translationDistance)}}
+                   : json{{"pure_translation", false},
+                          {"angle", toString(sc.theta)},
+                          {"axis", toJson(sc.axis)},
+                          {"point", toJson(sc.point)},
+                          {"pitch_per_radian", toString(sc.pitch)}}},
+              {"round_trip_residuals",
+               {{"exp(log)", toDouble(eExp)},
+                {"dual_quaternion", toDouble(eDq)},
+                {"study_parameters", toDouble(eStudy)},
+                {"screw", toDouble(eScrew)}}},
+              {"tolerance", toDouble(tol)},
+              {"passed", ok}};
+    out << j.dump(2) << "\n";
+    return ok ? 0 : 1;
+  }
+  out << fmt::format("pose {} ({}, {} significant bits)\n", file.string(), scalarName<S>(),
+                     digits<S>());
+  out << "  matrix          " << toText(m.row(0)) << "\n";
+  for (int i = 1; i < 4; ++i) out << "                  " << toText(m.row(i)) << "\n";
+  out << "  quaternion      (w, x, y, z) = " << toText(qv) << "\n";
+  out << "  dual quaternion a + εc, c = ½ t a   (GF §9.3)\n"
+      << "                  a = " << toText(h.coeffs().template head<4>()) << "\n"
+      << "                  c = " << toText(h.coeffs().template tail<4>()) << "\n";
+  out << "  Study params    " << toText(sp.coeffs()) << "\n"
+      << "                  a·c = " << toString(sp.studyCondition())
+      << ", |a·c|/(|a||c|) = " << toString(sp.studyDefect(), 3) << "  (Study quadric)\n";
+  out << "  twist log       (ω; v) = " << toText(xi.coeffs()) << "\n";
+  if (sc.pureTranslation)
+    out << "  screw           pure translation " << toString(sc.translationDistance)
+        << " along " << toText(sc.translationDirection) << "\n";
+  else
+    out << "  screw           θ = " << toString(sc.theta) << " about " << toText(sc.axis)
+        << " through " << toText(sc.point) << ", pitch " << toString(sc.pitch)
+        << " per radian  (GF §2.5.2)\n";
+  out << fmt::format(
+      "  round trips     exp(log) {:.3g}, dual quaternion {:.3g}, Study {:.3g}, screw {:.3g}"
+      "  (tolerance {:.3g}) {}\n",
+      toDouble(eExp), toDouble(eDq), toDouble(eStudy), toDouble(eScrew), toDouble(tol),
+      ok ? "PASS" : "FAIL");
+  out << fmt::format("  time            {:.3g} ms\n", secs * 1e3);
+  return ok ? 0 : 1;
+}
+}  // namespace
+
+int poseCommand(const std::filesystem::path& file, ScalarKind scalar, bool json, std::ostream& out) {
+  return withScalar(scalar, [&]<class S>() { return run<S>(file, json, out); });
+}
+
+}  // namespace soma::studies
