@@ -30,7 +30,7 @@ TEMPLATE_TEST_CASE("SE3 analytic Jacobians agree with central differences on the
   for (const auto& smp : lie::samples<SE3<S>>(g, 20)) lie::checkJacobiansNumerically(smp, g);
 }
 
-TEMPLATE_TEST_CASE("SE3 log sweep over (0, pi]: worst error a few ulp", "[se3][accuracy]", float,
+TEMPLATE_TEST_CASE("SE3 log sweep over 0 < theta <= pi: worst error a few ulp", "[se3][accuracy]", float,
                    double, long double, __float128) {
   using S = TestType;
   const LogAccuracy r = worstLogError<S>(240);
