@@ -172,6 +172,7 @@ struct Prepared {
   double zNear = 0, zFar = 0;
   // Shaded triangles: closed solids (back faces culled) and two-sided surfaces, opaque and transparent.
   detail::Batch solid, surface, solidT, surfaceT;
+  detail::Batch flat, flatT;  // unlit filled triangles (Fill)
   std::vector<float> surfaceBack, surfaceTBack;  // back-face colours of the two-sided batches
   std::vector<LineMesh> lines, linesT;
   DiscMesh dots, dotsT;
@@ -292,7 +293,7 @@ void tessellate(Prepared& pr) {
   const Scene& s = *pr.scene;
   Eigen::AlignedBox3d box = s.bounds();
   const Eigen::Vector3d origin = box.isEmpty() ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : Eigen::Vector3d(box.center());
-  for (detail::Batch* b : {&pr.solid, &pr.surface, &pr.solidT, &pr.surfaceT}) b->origin = origin;
+  for (detail::Batch* b : {&pr.solid, &pr.surface, &pr.solidT, &pr.surfaceT, &pr.flat, &pr.flatT}) b->origin = origin;
   const double L = s.characteristicLength();
   const detail::PixelScale ppu = [&pr](const Eigen::Vector3d& p) { return pixelsPerUnit(pr, p); };
   auto solidFor = [&pr](const Color& c) -> detail::Batch& { return transparent(c) ? pr.solidT : pr.solid; };
@@ -312,6 +313,15 @@ void tessellate(Prepared& pr) {
   for (const Mesh& x : s.meshes) {
     if (x.twoSided) detail::addMesh(transparent(x.c) ? pr.surfaceT : pr.surface, x);
     else detail::addMesh(solidFor(x.c), x);
+  }
+  for (const Fill& x : s.fills) {
+    bool anyTransparent = transparent(x.c) && x.vc.empty();
+    for (const Color& c : x.vc) anyTransparent = anyTransparent || transparent(c);
+    detail::Batch& b = anyTransparent ? pr.flatT : pr.flat;
+    const unsigned first = unsigned(b.pos.size() / 3);
+    for (std::size_t k = 0; k < x.v.size(); ++k)
+      b.vertex(x.v[k], Eigen::Vector3d::UnitZ(), x.vc.empty() ? x.c : x.vc[k]);
+    for (const auto& t : x.tri) b.triangle(first + unsigned(t[0]), first + unsigned(t[1]), first + unsigned(t[2]));
   }
   const Color axis[3] = {palette::axisX, palette::axisY, palette::axisZ};
   for (const Frame& f : s.frames) {
@@ -585,6 +595,23 @@ void drawSurface(const detail::Batch& b, const std::vector<float>& back, const E
   glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_FALSE);
 }
 
+// Unlit, both faces: the colours are drawn as given.
+void drawFlat(const detail::Batch& b, const Eigen::Matrix4d& view) {
+  if (b.empty()) return;
+  glDisable(GL_LIGHTING);
+  glDisable(GL_CULL_FACE);
+  glDisableClientState(GL_NORMAL_ARRAY);
+  Eigen::Matrix4d mv = view;
+  mv.block<3, 1>(0, 3) += view.block<3, 3>(0, 0) * b.origin;
+  glMatrixMode(GL_MODELVIEW);
+  glLoadMatrixd(mv.data());
+  glVertexPointer(3, GL_FLOAT, 0, gpu->array(b.pos));
+  glColorPointer(4, GL_FLOAT, 0, gpu->array(b.col));
+  glDrawElements(GL_TRIANGLES, GLsizei(b.idx.size()), GL_UNSIGNED_INT, gpu->elements(b.idx));
+  glEnableClientState(GL_NORMAL_ARRAY);
+  glEnable(GL_LIGHTING);
+}
+
 void drawSolid(const detail::Batch& b, const Eigen::Matrix4d& view) {
   if (b.empty()) return;
   glEnable(GL_CULL_FACE);
@@ -701,6 +728,7 @@ void drawPass(const Prepared& pr, const Eigen::Matrix4d& tile, int tw, int th) {
   // Opaque: solids, surfaces, lines.
   drawSolid(pr.solid, pr.view);
   drawSurface(pr.surface, pr.surfaceBack, pr.view);
+  drawFlat(pr.flat, pr.view);
   drawDots(pr.dots, tile, pr);
   drawLines(pr.lines, tile, pr, stencilRef);
   // Transparent, over everything opaque, without depth writes (no sorting).
@@ -709,6 +737,7 @@ void drawPass(const Prepared& pr, const Eigen::Matrix4d& tile, int tw, int th) {
   glDepthMask(GL_FALSE);
   drawSolid(pr.solidT, pr.view);
   drawSurface(pr.surfaceT, pr.surfaceTBack, pr.view);
+  drawFlat(pr.flatT, pr.view);
   drawDots(pr.dotsT, tile, pr);
   drawLines(pr.linesT, tile, pr, stencilRef);
   glDepthMask(GL_TRUE);

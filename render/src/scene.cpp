@@ -15,6 +15,7 @@ Eigen::AlignedBox3d coreBounds(const Scene& s) {
   for (const auto& x : s.polylines) for (const auto& p : x.p) b.extend(p);
   for (const auto& x : s.tubes) for (const auto& p : x.p) b.extend(p);
   for (const auto& x : s.meshes) for (const auto& p : x.v) b.extend(p);
+  for (const auto& x : s.fills) for (const auto& p : x.v) b.extend(p);
   for (const auto& x : s.frames) {
     b.extend(Eigen::Vector3d(x.pose.block<3, 1>(0, 3)));
     if (x.scale > 0)
@@ -79,6 +80,7 @@ std::vector<Eigen::Vector3d> detail::outlinePoints(const Scene& sc, const Eigen:
   for (const auto& x : sc.polylines) for (const auto& p : x.p) out.push_back(p);
   for (const auto& x : sc.tubes) for (const auto& p : x.p) ball(p, detail::tubeRadius(x, L));
   for (const auto& x : sc.meshes) for (const auto& p : x.v) out.push_back(p);
+  for (const auto& x : sc.fills) for (const auto& p : x.v) out.push_back(p);
   for (const auto& x : sc.frames) {
     const double f = detail::frameScale(x, L);
     const Eigen::Vector3d o = x.pose.block<3, 1>(0, 3);
@@ -154,6 +156,22 @@ void Scene::validate() const {
           invalid(who + ".tri[" + std::to_string(k) + "] refers to vertex " + std::to_string(x.tri[k][j]) + " of " +
                   std::to_string(x.v.size()));
     checkColor(x.c, who);
+  }
+  for (std::size_t i = 0; i < fills.size(); ++i) {
+    const auto& x = fills[i];
+    const std::string who = at("Fill", i);
+    for (std::size_t k = 0; k < x.v.size(); ++k)
+      if (!detail::finite(x.v[k])) invalid(who + ".v[" + std::to_string(k) + "] has a non-finite coordinate " + detail::str(x.v[k]));
+    if (!x.vc.empty() && x.vc.size() != x.v.size())
+      invalid(who + " has " + std::to_string(x.vc.size()) + " vertex colours for " + std::to_string(x.v.size()) +
+              " vertices (give one per vertex, or none to use c)");
+    for (std::size_t k = 0; k < x.tri.size(); ++k)
+      for (int j = 0; j < 3; ++j)
+        if (x.tri[k][j] < 0 || std::size_t(x.tri[k][j]) >= x.v.size())
+          invalid(who + ".tri[" + std::to_string(k) + "] refers to vertex " + std::to_string(x.tri[k][j]) + " of " +
+                  std::to_string(x.v.size()));
+    checkColor(x.c, who);
+    for (std::size_t k = 0; k < x.vc.size(); ++k) checkColor(x.vc[k], who + ".vc[" + std::to_string(k) + "]");
   }
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const auto& x = frames[i];

@@ -49,6 +49,15 @@ struct Mesh {
   bool twoSided = true;  ///< light the back faces too (surfaces); false culls them (closed solids)
 };
 
+/// Flat-coloured triangles, not lit (a filled region of a 2-D figure: a heat-map cell, a shaded
+/// area). Colours per vertex (`vc`, one per vertex) or one colour `c` for all; drawn before lines
+/// and points, with depth test, so curves drawn at the same depth stay on top.
+struct Fill {
+  std::vector<Eigen::Vector3d> v;
+  std::vector<Eigen::Vector3i> tri;
+  std::vector<Color> vc;  ///< empty: every vertex has colour c
+  Color c = palette::skyBlue;
+};
 /// A coordinate frame: arrows along the pose's x, y, z axes coloured palette::axisX/Y/Z.
 struct Frame {
   Eigen::Matrix4d pose = Eigen::Matrix4d::Identity();  ///< homogeneous; the rotation block is used as given

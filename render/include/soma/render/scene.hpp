@@ -12,6 +12,7 @@ struct Scene {
   std::vector<Polyline> polylines;
   std::vector<Tube> tubes;
   std::vector<Mesh> meshes;
+  std::vector<Fill> fills;
   std::vector<Frame> frames;
   std::vector<Arrow> arrows;
   std::vector<Label> labels;
@@ -26,6 +27,7 @@ struct Scene {
   void add(Polyline x) { polylines.push_back(std::move(x)); }
   void add(Tube x) { tubes.push_back(std::move(x)); }
   void add(Mesh x) { meshes.push_back(std::move(x)); }
+  void add(Fill x) { fills.push_back(std::move(x)); }
   void add(Frame x) { frames.push_back(std::move(x)); }
   void add(Arrow x) { arrows.push_back(std::move(x)); }
   void add(Label x) { labels.push_back(std::move(x)); }

@@ -1,0 +1,176 @@
+// soma::render plots: tick placement, the data -> pixel map, clipping, cells, fills, bad input.
+#include "soma/render/render.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+
+namespace {
+using namespace soma::render;
+
+std::array<int, 3> rgb(const Image& img, double x, double yUp) {
+  // Plot frames are in pixels with y up; images are stored top row first.
+  const std::uint8_t* p = img.pixel(int(x), img.height - 1 - int(yUp));
+  return {p[0], p[1], p[2]};
+}
+std::array<int, 3> rgb8(const Color& c) {
+  return {int(std::lround(c.r * 255)), int(std::lround(c.g * 255)), int(std::lround(c.b * 255))};
+}
+Image renderPlot(const Plot& p, int w, int h, PlotFrame& f) {
+  Camera cam;
+  const Scene sc = plotScene(p, w, h, &cam, &f);
+  RenderOptions o;
+  o.width = w;
+  o.height = h;
+  o.samples = 2;
+  o.camera = cam;
+  return render(sc, o);
+}
+double px(const PlotFrame& f, double x) { return f.left + (x - f.xmin) / (f.xmax - f.xmin) * (f.right - f.left); }
+double py(const PlotFrame& f, double y) { return f.bottom + (y - f.ymin) / (f.ymax - f.ymin) * (f.top - f.bottom); }
+}  // namespace
+
+TEST_CASE("niceTicks: 1-2-5 steps covering the range", "[render][plot]") {
+  const auto t = niceTicks(0.0, 1.0, 5);
+  REQUIRE(t.size() == 6);
+  CHECK(t.front() == 0.0);
+  CHECK(t.back() == Approx(1.0));
+  CHECK(t[1] - t[0] == Approx(0.2));
+  const auto u = niceTicks(-3.7, 12.2, 7);  // raw step 2.27 → 2.5: −2.5, 0, …, 10 (12.5 > 12.2)
+  CHECK(u.front() == Approx(-2.5));
+  CHECK(u.back() == Approx(10.0));
+  for (std::size_t k = 1; k < u.size(); ++k) CHECK(u[k] - u[k - 1] == Approx(2.5));
+  CHECK(niceTicks(1.0, 1.0).empty());
+  CHECK(niceTicks(0.0, std::nan("")).empty());
+  // Far from zero and tiny spans: still inside the range and evenly spaced.
+  const auto v = niceTicks(1e8, 1e8 + 3, 3);
+  REQUIRE(v.size() >= 3);
+  for (double x : v) CHECK((x >= 1e8 && x <= 1e8 + 3));
+}
+
+TEST_CASE("tickLabel: decades as powers of ten, typographic minus", "[render][plot]") {
+  CHECK(tickLabel(-8, AxisScale::Log10) == "10⁻⁸");
+  CHECK(tickLabel(0, AxisScale::Log10) == "1");
+  CHECK(tickLabel(12, AxisScale::Log10) == "10¹²");
+  CHECK(tickLabel(-0.5, AxisScale::Linear) == "−0.5");
+  CHECK(tickLabel(2.5, AxisScale::Linear) == "2.5");
+}
+
+TEST_CASE("plot: a curve lands on the pixels its data map to, clipped to the axes", "[render][plot]") {
+  Plot p;
+  p.x.min = 0, p.x.max = 10, p.y.min = 0, p.y.max = 10;
+  p.grid = false;
+  // A horizontal line at y = 5 that runs far outside the x range: it must be clipped, not dropped.
+  p.add("", {-100, 100}, {5, 5}, palette::vermillion).width = 6;
+  // A vertical line x = 2 on a series with a NaN gap between y = 4 and y = 6.
+  p.add("", {2, 2, 2, 2}, {1, 4, std::nan(""), 9}, palette::blue).width = 6;
+  PlotFrame f;
+  const Image img = renderPlot(p, 600, 400, f);
+  CHECK(f.xmin == 0);
+  CHECK(f.xmax == 10);
+  CHECK(rgb(img, px(f, 7), py(f, 5)) == rgb8(palette::vermillion));
+  CHECK(rgb(img, px(f, 0.3), py(f, 5)) == rgb8(palette::vermillion));  // clipped at the left edge, still drawn
+  CHECK(rgb(img, px(f, 2), py(f, 2.5)) == rgb8(palette::blue));
+  CHECK(rgb(img, px(f, 2), py(f, 8.5)) == rgb8(palette::white));  // the gap (NaN) is not bridged
+  CHECK(rgb(img, px(f, 7), py(f, 8)) == rgb8(palette::white));
+  // Nothing of the curve outside the plot area (left margin at the line's height).
+  CHECK(rgb(img, f.left - 30, py(f, 5)) == rgb8(palette::white));
+}
+
+TEST_CASE("plot: cells fill their rectangles, flat and unlit; log axes map decades evenly", "[render][plot]") {
+  Plot p;
+  p.grid = false;
+  PlotCells c;
+  c.x0 = 1, c.x1 = 1e4, c.y0 = 0, c.y1 = 2, c.nx = 3, c.ny = 2;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 3; ++i) c.cells.push_back(palette::cycle(std::size_t(j * 3 + i)));
+  p.cells.push_back(c);
+  p.x.scale = AxisScale::Log10;
+  p.x.min = 1, p.x.max = 1e4, p.y.min = 0, p.y.max = 2;
+  PlotFrame f;
+  const Image img = renderPlot(p, 700, 500, f);
+  // Cell (i, j) spans decades [10^(4i/3), 10^(4(i+1)/3)] in x: sample at its centre in log space.
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 3; ++i) {
+      const double lx = 4.0 * (i + 0.5) / 3;
+      const double x = f.left + lx / 4 * (f.right - f.left);
+      CHECK(rgb(img, x, py(f, j + 0.5)) == rgb8(palette::cycle(std::size_t(j * 3 + i))));
+    }
+}
+
+TEST_CASE("plot: equal aspect keeps circles round", "[render][plot]") {
+  Plot p;
+  p.equalAspect = true;
+  std::vector<double> x, y;
+  for (int k = 0; k < 200; ++k) {
+    x.push_back(std::cos(2 * M_PI * k / 200));
+    y.push_back(std::sin(2 * M_PI * k / 200));
+  }
+  p.add("circle", x, y, palette::blue).closed = true;
+  PlotFrame f;
+  (void)plotScene(p, 900, 500, nullptr, &f);
+  const double sx = (f.right - f.left) / (f.xmax - f.xmin), sy = (f.top - f.bottom) / (f.ymax - f.ymin);
+  CHECK(sx == Approx(sy).epsilon(1e-12));
+  CHECK(f.xmin <= -1.0);
+  CHECK(f.ymax >= 1.0);
+}
+
+TEST_CASE("plot: bad input is named", "[render][plot]") {
+  Plot p;
+  CHECK_THROWS_WITH(plotScene(p, 800, 600), Catch::Matchers::Contains("nothing to plot"));
+  p.add("bad", {1, 2, 3}, {1, 2}, palette::blue);
+  CHECK_THROWS_WITH(plotScene(p, 800, 600), Catch::Matchers::Contains("has 3 x and 2 y values"));
+  p.series.clear();
+  p.add("ok", {1, 2}, {1, 2}, palette::blue);
+  p.y.scale = AxisScale::Log10;
+  p.y.min = -1;
+  CHECK_THROWS_WITH(plotScene(p, 800, 600), Catch::Matchers::Contains("not positive"));
+  p.y.min = std::nan("");
+  CHECK_THROWS_WITH(plotScene(p, 100, 600), Catch::Matchers::Contains("below 200"));
+  PlotCells c;
+  c.nx = 2, c.ny = 2;
+  c.cells.resize(3);
+  p.cells.push_back(c);
+  CHECK_THROWS_WITH(plotScene(p, 800, 600), Catch::Matchers::Contains("3 colours for a 2×2 grid"));
+  Fill bad;
+  bad.v = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  bad.tri = {{0, 1, 3}};
+  Scene s;
+  s.add(bad);
+  CHECK_THROWS_WITH(s.validate(), Catch::Matchers::Contains("Fill[0].tri[0] refers to vertex 3"));
+}
+
+TEST_CASE("plot demo: curves, markers, legend, log axis, map", "[.demo][plot]") {
+  const std::filesystem::path dir = "out/render-demo";
+  std::filesystem::create_directories(dir);
+  Plot p;
+  p.title = "Demo: error vs angle";
+  p.x.label = "θ (rad)";
+  p.y.label = "error (ulps)";
+  p.x.scale = AxisScale::Log10;
+  std::vector<double> x, y1, y2;
+  for (int k = 0; k <= 80; ++k) {
+    x.push_back(std::pow(10.0, -8 + 8.5 * k / 80));
+    y1.push_back(1 + 0.5 * std::sin(k * 0.3));
+    y2.push_back(2 + 0.3 * std::cos(k * 0.2));
+  }
+  p.add("double", x, y1, palette::blue).markers = true;
+  p.add("float128", x, y2, palette::vermillion).dashed = true;
+  p.texts.push_back({1e-4, 2.6, "a note at (1e-4, 2.6)"});
+  renderPlotPng(p, dir / "plot-demo.png", 1000, 650);
+  Plot m;
+  m.title = "Demo: a map";
+  m.x.label = "first parameter";
+  m.y.label = "second parameter";
+  PlotCells c;
+  c.nx = c.ny = 60;
+  c.x0 = 0, c.x1 = 3, c.y0 = 0, c.y1 = 2;
+  for (int j = 0; j < 60; ++j)
+    for (int i = 0; i < 60; ++i) c.cells.push_back(colorMap(0.5 + 0.5 * std::sin(i * 0.1) * std::cos(j * 0.12)));
+  m.cells.push_back(c);
+  m.legendSwatches.emplace_back("low", colorMap(0));
+  m.legendSwatches.emplace_back("high", colorMap(1));
+  renderPlotPng(m, dir / "plot-map-demo.png", 900, 700);
+  CHECK(std::filesystem::exists(dir / "plot-map-demo.png"));
+}
