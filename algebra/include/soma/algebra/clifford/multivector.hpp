@@ -29,6 +29,8 @@
 #include <sstream>
 #include <string>
 #include <type_traits>
+#include <memory>
+#include <utility>
 #include <vector>
 
 namespace soma::clifford {
@@ -162,24 +164,248 @@ template <class Sig, Op op, GradeMask A, GradeMask B> struct ProductTable {
     return c;
   }
 
-  static const auto& terms() {
-    if constexpr (atCompileTime) {
-      static constexpr Shape shape = shapeOf();
-      static_assert(shape.mask == result, "clifford: resultGrades disagrees with the blade table");
-      static constexpr auto table = [] {
-        std::array<Term, shape.count> t{};
-        fill(t);
-        return t;
-      }();
-      return table;
-    } else {
-      static const std::vector<Term> table = [] {
-        std::vector<Term> v(std::size_t(LA::size) * std::size_t(LB::size));
-        v.resize(std::size_t(fill(v)));
-        return v;
-      }();
-      return table;
+  static const auto& terms();
+};
+
+/// The compile-time term table of a small product (atCompileTime), with `first` marking, for
+/// each result index, the first term that writes it (so the unrolled kernel assigns instead of
+/// adding to zero).
+template <class PT, bool = PT::atCompileTime> struct StaticTerms {
+  static constexpr int count = 0;
+};
+template <class PT> struct StaticTerms<PT, true> {
+  static constexpr typename PT::Shape shape = PT::shapeOf();
+  static_assert(shape.mask == PT::result,
+                "clifford: resultGrades disagrees with the blade table");
+  static constexpr int count = shape.count;
+  static constexpr std::array<Term, std::size_t(count)> table = [] {
+    std::array<Term, std::size_t(count)> t{};
+    PT::fill(t);
+    return t;
+  }();
+  static constexpr std::array<bool, std::size_t(count)> first = [] {
+    std::array<bool, std::size_t(count)> f{};
+    std::array<bool, std::size_t(PT::LR::size) + 1> seen{};
+    for (int c = 0; c < count; ++c) {
+      f[std::size_t(c)] = !seen[table[std::size_t(c)].k];
+      seen[table[std::size_t(c)].k] = true;
     }
+    return f;
+  }();
+};
+
+template <class Sig, Op op, GradeMask A, GradeMask B>
+const auto& ProductTable<Sig, op, A, B>::terms() {
+  if constexpr (atCompileTime) {
+    return StaticTerms<ProductTable>::table;
+  } else {
+    static const std::vector<Term> table = [] {
+      std::vector<Term> v(std::size_t(LA::size) * std::size_t(LB::size));
+      v.resize(std::size_t(fill(v)));
+      return v;
+    }();
+    return table;
+  }
+}
+
+/// Straight-line product for a compile-time table: every index and sign is a constant, so the
+/// compiler emits one multiply and one add (or a move) per term, no loads of the table and no
+/// branches. Used for tables of at most kUnrollTerms terms and built-in floating types.
+inline constexpr int kUnrollTerms = 256;
+template <class TT, class Out, class XA, class XB, std::size_t... I>
+inline void applyUnrolled(Out& out, const XA& a, const XB& b, std::index_sequence<I...>) {
+  constexpr auto& t = TT::table;
+  constexpr auto& f = TT::first;
+  (((f[I] ? (t[I].s > 0 ? void(out[t[I].k] = a[t[I].i] * b[t[I].j])
+                        : void(out[t[I].k] = -(a[t[I].i] * b[t[I].j])))
+          : (t[I].s > 0 ? void(out[t[I].k] += a[t[I].i] * b[t[I].j])
+                        : void(out[t[I].k] -= a[t[I].i] * b[t[I].j])))),
+   ...);
+}
+
+/// Blocked geometric product for large algebras (n ≥ 5, built-in floating types).
+/// Split each blade into its low L generator bits (al, never null: L ≤ p+q) and the rest (ah).
+/// The blade sign factorises, s(a, b) = s(ah, bh) · s(al, bl) · (−1)^{|ah|·|bl|}, and the
+/// result blade is (ah ⊕ bh, al ⊕ bl). For fixed a and a block bh the W = 2^L products with
+/// the blades (bh, ·) of b land in the block kh = ah ⊕ bh of the result, so after one signed,
+/// permuted copy of b per (|ah| mod 2, al) the whole block is an axpy of width W:
+///   c[kh][·] += (s(ah,bh) a_a) · b'[|ah| mod 2][al][bh][·].
+/// Blocks with s(ah, bh) = 0 (a shared null generator: ah ∧ bh ∋ e_null) are skipped whole —
+/// this is where degenerate generators remove 7/16 of the work of Cl(0,6,2). When both
+/// operands have a single parity (Even, Odd, a single grade), so has the result, and only the
+/// W/2 lanes of that parity are stored and computed.
+template <class Sig, GradeMask A, GradeMask B> struct Blocked {
+  static constexpr int L = Sig::p + Sig::q < 4 ? Sig::p + Sig::q : 4;
+  static constexpr int W = 1 << L, D = Sig::dim, NB = D / W;
+  static constexpr bool enabled = Sig::n >= 5 && L >= 2;
+  static constexpr GradeMask R = resultGrades<Sig, Op::Geometric>(A, B);
+  static constexpr bool pureParity(GradeMask m) {
+    return (m & Sig::evenGrades) == m || (m & Sig::oddGrades) == m;
+  }
+  static constexpr bool compact = pureParity(A) && pureParity(B);
+  static constexpr int parR = (R & Sig::oddGrades) ? 1 : 0;  // used only when compact
+  static constexpr int WB = compact ? W / 2 : W;
+  static constexpr int par(unsigned x) { return std::popcount(x) & 1; }
+  /// lane[q][t]: the t-th low index kl stored in a result block whose lanes have parity q
+  /// (compact), or kl = t.
+  static constexpr std::array<std::array<std::uint8_t, W>, 2> lane = [] {
+    std::array<std::array<std::uint8_t, W>, 2> l{};
+    for (int q = 0; q < 2; ++q) {
+      int t = 0;
+      for (int kl = 0; kl < W; ++kl)
+        if (!compact || par(unsigned(kl)) == q) l[q][t++] = std::uint8_t(kl);
+    }
+    return l;
+  }();
+  /// s(ah, bh) for the blades above the low L generators.
+  static constexpr std::array<std::int8_t, std::size_t(NB) * NB> hiSign = [] {
+    std::array<std::int8_t, std::size_t(NB) * NB> s{};
+    for (int ah = 0; ah < NB; ++ah)
+      for (int bh = 0; bh < NB; ++bh)
+        s[std::size_t(ah) * NB + bh] = std::int8_t(Sig::productSign(Blade(ah) << L, Blade(bh) << L));
+    return s;
+  }();
+  /// Which (|ah| mod 2, al) occur among a's blades, and which blocks bh hold any of b's blades.
+  static constexpr std::array<bool, 2 * W> usedA = [] {
+    std::array<bool, 2 * W> u{};
+    for (Blade a : Layout<Sig, A>::blades) u[std::size_t(par(a >> L) * W + (a & (W - 1)))] = true;
+    return u;
+  }();
+  static constexpr std::array<bool, NB> usedB = [] {
+    std::array<bool, NB> u{};
+    for (Blade b : Layout<Sig, B>::blades) u[b >> L] = true;
+    return u;
+  }();
+  /// For each result block kh, the blades a of the left operand that reach it, in storage
+  /// order (so each coefficient sums its terms in the same order as the term tables): storage
+  /// index i, sign flag, and offset of the block bh = ah ⊕ kh in the signed copy of b.
+  struct Entry {
+    std::uint16_t i;
+    std::uint16_t off;
+    bool neg;
+  };
+  static constexpr int kEntryMax = NB * Layout<Sig, A>::size;
+  struct Entries {
+    std::array<Entry, std::size_t(kEntryMax)> e;
+    std::array<int, std::size_t(NB) + 1> start;
+  };
+  static constexpr Entries kAll = [] {
+    Entries r{};
+    int m = 0;
+    for (int kh = 0; kh < NB; ++kh) {
+      r.start[std::size_t(kh)] = m;
+      for (int i = 0; i < Layout<Sig, A>::size; ++i) {
+        const Blade ab = Layout<Sig, A>::blades[std::size_t(i)];
+        const int ah = int(ab >> L), al = int(ab & (W - 1)), bh = ah ^ kh;
+        const int s = hiSign[std::size_t(ah) * NB + bh];
+        if (s == 0 || !usedB[std::size_t(bh)]) continue;
+        r.e[std::size_t(m++)] = Entry{std::uint16_t(i),
+                                      std::uint16_t((par(unsigned(ah)) * W + al) * NB * WB + bh * WB),
+                                      s < 0};
+      }
+    }
+    r.start[std::size_t(NB)] = m;
+    return r;
+  }();
+  static constexpr const auto& kEntries = kAll.e;
+  static constexpr const auto& kStart = kAll.start;
+  /// For (p, al, q) and lane t: the low index bl = al ⊕ lane[q][t] of b and whether
+  /// s(al, bl) (−1)^{p|bl|} is negative.
+  struct Lo {
+    std::array<std::uint8_t, W> src;
+    std::array<bool, W> neg;
+  };
+  static constexpr std::array<Lo, 4 * W> loTerms = [] {
+    std::array<Lo, 4 * W> r{};
+    for (int p = 0; p < 2; ++p)
+      for (int al = 0; al < W; ++al)
+        for (int q = 0; q < 2; ++q) {
+          Lo& lo = r[std::size_t((p * W + al) * 2 + q)];
+          for (int t = 0; t < WB; ++t) {
+            const int bl = al ^ lane[q][t];
+            lo.src[std::size_t(t)] = std::uint8_t(bl);
+            lo.neg[std::size_t(t)] =
+                Sig::productSign(Blade(al), Blade(bl)) * ((p & par(unsigned(bl))) ? -1 : 1) < 0;
+          }
+        }
+    return r;
+  }();
+  /// Storage index in the result type of (kh, lane t), −1 if not stored.
+  static constexpr std::array<std::int16_t, std::size_t(NB) * WB> outIndex = [] {
+    std::array<std::int16_t, std::size_t(NB) * WB> o{};
+    for (int kh = 0; kh < NB; ++kh)
+      for (int t = 0; t < WB; ++t) {
+        const int q = compact ? (parR ^ par(unsigned(kh))) : 0;
+        o[std::size_t(kh) * WB + t] = Layout<Sig, R>::index[(kh << L) | lane[q][t]];
+      }
+    return o;
+  }();
+
+  /// Blocks bh of each parity (the lanes of a compact block depend on it).
+  static constexpr std::array<std::array<std::uint8_t, NB / 2>, 2> bhOfParity = [] {
+    std::array<std::array<std::uint8_t, NB / 2>, 2> r{};
+    int n0 = 0, n1 = 0;
+    for (int bh = 0; bh < NB; ++bh) {
+      if (par(unsigned(bh))) r[1][std::size_t(n1++)] = std::uint8_t(bh);
+      else r[0][std::size_t(n0++)] = std::uint8_t(bh);
+    }
+    return r;
+  }();
+  /// dst[t] = ±blk[src[t]] with the constants of loTerms[LI]: straight-line loads and stores.
+  template <int LI, class S> static void copyLanes(const S* blk, S* dst) {
+    constexpr const Lo& lo = loTerms[std::size_t(LI)];
+    [&]<std::size_t... T>(std::index_sequence<T...>) {
+      ((dst[T] = lo.neg[T] ? -blk[lo.src[T]] : blk[lo.src[T]]), ...);
+    }(std::make_index_sequence<std::size_t(WB)>{});
+  }
+  /// The signed, permuted copy of b for one (p, al) = (C / W, C % W), if a has such blades.
+  template <int C, class S> static void fillCombo(const S* bd, S* bt) {
+    if constexpr (usedA[std::size_t(C)]) {
+      constexpr int p = C / W;
+      S* dst = bt + std::size_t(C) * NB * WB;
+      for (int h = 0; h < 2; ++h) {
+        for (int m = 0; m < NB / 2; ++m) {
+          const int bh = bhOfParity[std::size_t(h)][std::size_t(m)];
+          if (h == 0 || !compact)
+            copyLanes<C * 2 + (compact ? (parR ^ p) : 0)>(bd + (bh << L), dst + bh * WB);
+          else
+            copyLanes<C * 2 + (parR ^ p ^ 1)>(bd + (bh << L), dst + bh * WB);
+        }
+      }
+    }
+  }
+
+  template <class S, class XA, class XB, class Out>
+  static void apply(const XA& a, const XB& b, Out& out) {
+    // Blocks of WB scalars start at multiples of WB·sizeof(S) (a power of two) in arrays
+    // aligned to 64 bytes.
+    constexpr std::size_t kAlign = WB * sizeof(S) < 64 ? WB * sizeof(S) : 64;
+    std::array<S, D> bd{};  // b in blade (bitmask) order
+    for (int j = 0; j < XB::size; ++j) bd[XB::blade(j)] = b[j];
+    // b'[p][al][bh][t] = s(al, bl) (−1)^{p|bl|} b[bh, bl], bl = al ⊕ kl(t), kl the lane of the
+    // result block kh = ah ⊕ bh (parity p ⊕ par(bh) ⊕ parR when compact).
+    alignas(64) std::array<S, std::size_t(2 * W) * D / W * WB> bt;
+    [&]<std::size_t... C>(std::index_sequence<C...>) {
+      (fillCombo<int(C)>(bd.data(), bt.data()), ...);
+    }(std::make_index_sequence<std::size_t(2 * W)>{});
+    alignas(64) std::array<S, std::size_t(NB) * WB> c;
+    for (int kh = 0; kh < NB; ++kh) {
+      // Result block kh in registers: every a meets the single block bh = ah ⊕ kh of b.
+      alignas(64) S acc[WB] = {};
+      for (int m = kStart[std::size_t(kh)]; m < kStart[std::size_t(kh) + 1]; ++m) {
+        const Entry e = kEntries[std::size_t(m)];
+        const S x = a[e.i];
+        const S y = e.neg ? -x : x;
+        const S* __restrict sb = std::assume_aligned<kAlign>(&bt[e.off]);
+        for (int t = 0; t < WB; ++t) acc[t] += y * sb[t];
+      }
+      for (int t = 0; t < WB; ++t) c[std::size_t(kh * WB + t)] = acc[t];
+    }
+    finish(c, out);
+  }
+  template <class C, class Out> static void finish(const C& c, Out& out) {
+    for (std::size_t m = 0; m < c.size(); ++m)
+      if (outIndex[m] >= 0) out[outIndex[m]] = c[m];
   }
 };
 
@@ -328,7 +554,21 @@ template <class Sig, class S> using Odd = Multivector<Sig, S, Sig::oddGrades>;
 template <Op op, class Sig, class S, GradeMask A, GradeMask B>
 auto product(const Multivector<Sig, S, A>& a, const Multivector<Sig, S, B>& b) {
   using T = detail::ProductTable<Sig, op, A, B>;
-  Multivector<Sig, S, T::result> out;
+  using Out = Multivector<Sig, S, T::result>;
+  Out out;
+  constexpr bool builtin = std::is_floating_point_v<S> || std::is_same_v<S, __float128>;
+  if constexpr (builtin && T::atCompileTime) {
+    using TT = detail::StaticTerms<T>;
+    if constexpr (TT::count <= detail::kUnrollTerms) {
+      detail::applyUnrolled<TT>(out, a, b, std::make_index_sequence<std::size_t(TT::count)>{});
+      return out;
+    }
+  }
+  if constexpr (builtin && op == Op::Geometric && !T::atCompileTime &&
+                detail::Blocked<Sig, A, B>::enabled) {
+    detail::Blocked<Sig, A, B>::template apply<S>(a, b, out);
+    return out;
+  }
   for (const auto& t : T::terms()) {
     if (t.s > 0)
       out[t.k] += a[t.i] * b[t.j];
