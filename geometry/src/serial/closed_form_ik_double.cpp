@@ -1,0 +1,27 @@
+// Closed-form IK instantiated for double (see closed_form_ik_impl.hpp).
+#include "closed_form_ik_impl.hpp"
+
+namespace soma {
+SOMA_CFIK_INSTANTIATE(double)
+
+std::optional<IkMethod> parseIkMethod(std::string_view name) {
+  if (name == "auto") return IkMethod::Auto;
+  if (name == "wrist3r") return IkMethod::Wrist3R;
+  if (name == "arm3r") return IkMethod::Arm3R;
+  if (name == "pieper") return IkMethod::Pieper;
+  if (name == "general6r") return IkMethod::General6R;
+  return std::nullopt;
+}
+std::string_view ikMethodName(IkMethod m) {
+  switch (m) {
+    case IkMethod::Auto: return "auto";
+    case IkMethod::Wrist3R: return "wrist3r";
+    case IkMethod::Arm3R: return "arm3r";
+    case IkMethod::Pieper: return "pieper";
+    case IkMethod::General6R: return "general6r";
+  }
+  return "auto";
+}
+std::string ikMethodNames() { return "auto wrist3r arm3r pieper general6r"; }
+
+}  // namespace soma

@@ -1,0 +1,668 @@
+#pragma once
+// Closed-form inverse kinematics: 3R wrists (GF §5.1), 3R arms (GF §5.2), Pieper robots (GF §10.3).
+// Private implementation header: closed_form_ik_<scalar>.cpp instantiate it once per scalar (one TU
+// each, so the five build in parallel; together they took ~3 min of CPU as one TU).
+#include "soma/geometry/serial/closed_form_ik.hpp"
+
+#include "soma/algebra/errors.hpp"
+#include "soma/algebra/polynomial.hpp"
+
+#include <Eigen/LU>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+
+namespace soma {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+template <class S> Mat3<S> rodrigues(const Vec3<S>& v, const S& th) {
+  using std::cos;
+  using std::sin;
+  const Mat3<S> K = skew(v);
+  return Mat3<S>::Identity() + sin(th) * K + (S(1) - cos(th)) * (K * K);
+}
+
+/// Signed angle of the rotation about unit v taking a to b (both taken relative to a point of
+/// the axis and projected on the plane ⟂ v). `degenerate` when a lies on the axis.
+// GF §5.2.1, GF-5.2.1-theta2-recovery (corrected, erratum E5.6: |v×(a−r)|² and b − r)
+template <class S> S angleAbout(const Vec3<S>& v, const Vec3<S>& a, const Vec3<S>& b,
+                               bool* degenerate, const S& scale2) {
+  using std::atan2;
+  const Vec3<S> ap = a - v * v.dot(a), bp = b - v * v.dot(b);
+  if (degenerate) *degenerate = ap.squaredNorm() <= Tolerance<S>::rank() * scale2;
+  return atan2(v.dot(ap.cross(bp)), ap.dot(bp));
+}
+
+/// A point (or a plane) turning about a line: x(φ) = c0 + cc cos φ + cs sin φ.
+template <class S> struct Circle {
+  Vec3<S> c0, cc, cs;
+  Vec3<S> at(const S& phi) const {
+    using std::cos;
+    using std::sin;
+    return c0 + cc * cos(phi) + cs * sin(phi);
+  }
+};
+/// x turned about the line (v, r) by σφ, σ = ±1. GF §5.2.1, GF-5.2.1-revolute-joint-exp
+template <class S> Circle<S> circleOf(const Vec3<S>& v, const Vec3<S>& r, const Vec3<S>& x, int sigma) {
+  const Vec3<S> u = x - r;
+  const Vec3<S> vvu = v * v.dot(u);
+  return {Vec3<S>(r + vvu), Vec3<S>(u - vvu), Vec3<S>(S(sigma) * v.cross(u))};
+}
+
+/// One side of the circle-pair problem: its two invariants under the middle rotation, as
+/// coefficients of (1, cos φ, sin φ).
+template <class S> using InvRows = Eigen::Matrix<S, 2, 3>;
+
+/// Point x(φ) about middle axis (vm, rm): f1 = vm·x, f2 = |x − rm|² (the cos², sin² terms
+/// combine to |cs|² because cc ⟂ cs and |cc| = |cs|). GF §5.2.1, GF-5.2.1-3r-ik-procedure
+template <class S> InvRows<S> pointInvariants(const Circle<S>& c, const Vec3<S>& vm, const Vec3<S>& rm) {
+  InvRows<S> f;
+  const Vec3<S> d = c.c0 - rm;
+  f << vm.dot(c.c0), vm.dot(c.cc), vm.dot(c.cs),  //
+      d.squaredNorm() + c.cs.squaredNorm(), S(2) * d.dot(c.cc), S(2) * d.dot(c.cs);
+  return f;
+}
+
+/// Plane {y : n·y = d} turned about the line (v, r) by σφ: n(φ) is the circle `nc` of the
+/// normal (about the origin) and d(φ) − n(φ)·rm = d − n·r + n(φ)·(r − rm).
+// GF §10.3.1 (parallel case: ℓ6 ∧ (a5* π a5), the plane of the three parallel axes), GF-10.3.2-T3-robot
+template <class S> InvRows<S> planeInvariants(const Vec3<S>& v, const Vec3<S>& r, const Vec3<S>& n,
+                                             const S& d, int sigma, const Vec3<S>& vm,
+                                             const Vec3<S>& rm, Circle<S>* normal) {
+  const Circle<S> nc = circleOf<S>(v, Vec3<S>::Zero(), n, sigma);
+  if (normal) *normal = nc;
+  const Vec3<S> w = r - rm;
+  InvRows<S> f;
+  f << vm.dot(nc.c0), vm.dot(nc.cc), vm.dot(nc.cs),  //
+      d - n.dot(r) + nc.c0.dot(w), nc.cc.dot(w), nc.cs.dot(w);
+  return f;
+}
+
+template <class S> struct PairRoots {
+  std::vector<std::pair<S, S>> angles;  // (φA, φB)
+  bool continuum = false;
+  bool doubleRoot = false;
+  std::vector<std::string> notes;
+};
+
+/// Smallest-singular left vector y of a 2×2 matrix (yᵀM ≈ 0 when M is singular).
+template <class S> Vec2<S> leftNull(const Mat2<S>& M) {
+  using std::sqrt;
+  const Mat2<S> A = M * M.transpose();
+  const S a = A(0, 0), b = A(0, 1), c = A(1, 1);
+  const S h = (a - c) / S(2);
+  const S lam = (a + c) / S(2) - sqrt(h * h + b * b);
+  Vec2<S> y1(b, lam - a), y2(lam - c, b);
+  Vec2<S> y = y1.squaredNorm() >= y2.squaredNorm() ? y1 : y2;
+  if (y.squaredNorm() == S(0)) return Vec2<S>(S(1), S(0));
+  return y.normalized();
+}
+
+/// FA·(1, cos φA, sin φA) = FB·(1, cos φB, sin φB): up to 4 real (φA, φB). The 2×2 block of the
+/// better-conditioned side is inverted and c² + s² = 1 of the other side gives a quartic in
+/// t = tan(ψ/2), φ = φ0 + ψ with φ0 chosen so that ψ = π is far from a root (the quartic's
+/// leading coefficient is the conic's value there). When both blocks are singular the system
+/// decouples into one equation per angle (the PUMA case: axes 1, 2 meet and 2 ∥ 3).
+// GF §5.2.1, GF-5.2.1-3r-ik-procedure (pencil of conics → tan-half-angle quartic; singular 2×2
+// system → eliminate the other angle)
+template <class S> PairRoots<S> solveCirclePair(InvRows<S> FA, InvRows<S> FB) {
+  using std::abs;
+  using std::atan;
+  using std::atan2;
+  using std::cos;
+  using std::sin;
+  PairRoots<S> out;
+  for (int i = 0; i < 2; ++i) {  // rows to unit scale (f1 is a length, f2 a squared length)
+    const S s = std::max<S>(FA.row(i).cwiseAbs().maxCoeff(), FB.row(i).cwiseAbs().maxCoeff());
+    if (s == S(0)) {
+      out.continuum = true;
+      out.notes.push_back("invariant equation " + std::to_string(i + 1) + " vanishes identically");
+      return out;
+    }
+    FA.row(i) /= s;
+    FB.row(i) /= s;
+  }
+  const Mat2<S> MA = FA.template rightCols<2>(), MB = FB.template rightCols<2>();
+  const Vec2<S> k = FB.col(0) - FA.col(0);
+  auto rel = [](const Mat2<S>& M) {
+    const S n2 = M.squaredNorm();
+    return n2 > S(0) ? S(abs(M.determinant()) / n2) : S(0);
+  };
+  const S condA = rel(MA), condB = rel(MB);
+  if (std::max<S>(condA, condB) > Tolerance<S>::sqrtEpsilon()) {
+    // u_free = (cos, sin) of the quartic's angle, u_dep = P u_free + m.
+    const bool freeIsB = condA >= condB;
+    Mat2<S> P;
+    Vec2<S> m;
+    if (freeIsB) {
+      const Mat2<S> inv = MA.inverse();
+      P = inv * MB;
+      m = inv * k;
+    } else {
+      const Mat2<S> inv = MB.inverse();
+      P = inv * MA;
+      m = -(inv * k);
+    }
+    const Mat2<S> G = P.transpose() * P;
+    const Vec2<S> h = P.transpose() * m;
+    const S e = m.squaredNorm() - S(1);
+    auto f = [&](const Vec2<S>& u) { return S(u.dot(G * u) + S(2) * h.dot(u) + e); };
+    S phi0 = S(0), best = S(-1);
+    for (int j = 0; j < 8; ++j) {
+      const S ph = pi<S>() * S(j) / S(4);
+      const S val = abs(f(Vec2<S>(-cos(ph), -sin(ph))));
+      if (val > best) {
+        best = val;
+        phi0 = ph;
+      }
+    }
+    Mat2<S> R0;
+    R0 << cos(phi0), -sin(phi0), sin(phi0), cos(phi0);
+    const Mat2<S> Gp = R0.transpose() * G * R0;
+    const Vec2<S> hp = R0.transpose() * h;
+    const std::array<S, 5> c = {Gp(0, 0) + S(2) * hp(0) + e, S(4) * Gp(0, 1) + S(4) * hp(1),
+                                S(-2) * Gp(0, 0) + S(4) * Gp(1, 1) + S(2) * e,
+                                S(-4) * Gp(0, 1) + S(4) * hp(1), Gp(0, 0) - S(2) * hp(0) + e};
+    S cmax = S(0);
+    for (const auto& ci : c) cmax = std::max<S>(cmax, abs(ci));
+    const S cscale = S(1) + G.cwiseAbs().maxCoeff() + h.cwiseAbs().maxCoeff() + abs(e);
+    std::vector<S> ts;
+    if (cmax <= Tolerance<S>::rank() * cscale) {
+      out.continuum = true;
+      out.notes.push_back("the conic vanishes on the whole circle: one angle is free (0 returned)");
+      ts.push_back(S(0));  // ψ = 0: φ = φ0
+    } else {
+      ts = quarticRealRoots<S>(c);
+    }
+    for (std::size_t i = 0; i < ts.size(); ++i) {
+      const S phiFree = phi0 + S(2) * atan(ts[i]);
+      const Vec2<S> uf(cos(phiFree), sin(phiFree));
+      const Vec2<S> ud = P * uf + m;
+      const S phiDep = atan2(ud(1), ud(0));
+      if (i > 0 && abs(ts[i] - ts[i - 1]) <= Tolerance<S>::input() * (S(1) + abs(ts[i])))
+        out.doubleRoot = true;
+      out.angles.emplace_back(freeIsB ? phiDep : phiFree, freeIsB ? phiFree : phiDep);
+    }
+    return out;
+  }
+  // Decoupled: yᵀ MA = 0 gives an equation in φB alone, zᵀ MB = 0 one in φA alone.
+  const Vec2<S> y = leftNull(MA), z = leftNull(MB);
+  const Vec2<S> wB = MB.transpose() * y, wA = MA.transpose() * z;
+  const TrigRoots<S> rB = solveLinearTrig<S>(wB(0), wB(1), -y.dot(k));
+  const TrigRoots<S> rA = solveLinearTrig<S>(wA(0), wA(1), z.dot(k));
+  out.notes.push_back("the invariant equations decouple (each involves one angle)");
+  std::vector<S> aA = rA.angles, aB = rB.angles;
+  if (rA.free) {
+    aA = {S(0)};
+    out.continuum = true;
+    out.notes.push_back("the first angle is free (0 returned)");
+  }
+  if (rB.free) {
+    aB = {S(0)};
+    out.continuum = true;
+    out.notes.push_back("the second angle is free (0 returned)");
+  }
+  out.doubleRoot = rA.doubleRoot || rB.doubleRoot;
+  for (const auto& a : aA)
+    for (const auto& b : aB) out.angles.emplace_back(a, b);
+  return out;
+}
+
+enum class ResidualMode { Pose, Position, Rotation };
+
+template <class S>
+S residualOf(const SerialRobot<S>& robot, const JointVector<S>& q, const SE3<S>& target, ResidualMode mode) {
+  using std::sqrt;
+  const SE3<S> t = robot.fk(q);
+  switch (mode) {
+    case ResidualMode::Position:
+      return sqrt((t.translation() - target.translation()).squaredNorm()) / robot.lengthScale();
+    case ResidualMode::Rotation: return sqrt((t.rotation() - target.rotation()).squaredNorm());
+    case ResidualMode::Pose: break;
+  }
+  return poseResidual(t, target, robot.lengthScale());
+}
+
+/// Newton steps on the posture (full pose: body Jacobian and the SE(3) log; position: the tool
+/// point's velocity columns; rotation: the angular rows), kept only while the residual falls.
+template <class S>
+void polish(const SerialRobot<S>& robot, JointVector<S>& q, const SE3<S>& target, ResidualMode mode, S& res) {
+  res = residualOf(robot, q, target, mode);
+  for (int it = 0; it < 4 && res > Tolerance<S>::identity(); ++it) {
+    const JacobianMatrix<S> Js = robot.spatialJacobian(q);
+    const SE3<S> t = robot.fk(q);
+    JointVector<S> dq;
+    if (mode == ResidualMode::Pose && robot.dof() == 6) {
+      const Vec6<S> e = t.inverse().compose(target).log().coeffs();
+      const Mat6<S> Jb = t.inverse().adjoint() * Js;
+      dq = Jb.partialPivLu().solve(e);
+    } else if (robot.dof() == 3) {
+      Mat3<S> J;
+      Vec3<S> e;
+      if (mode == ResidualMode::Rotation) {
+        J = Js.template topRows<3>();
+        e = SO3<S>::fromMatrix(target.rotation() * t.rotation().transpose()).log().coeffs();
+      } else {
+        const Vec3<S> p = t.translation();
+        for (int i = 0; i < 3; ++i)  // v + ω × p
+          J.col(i) = Js.col(i).template tail<3>() + Js.col(i).template head<3>().cross(p);
+        e = target.translation() - p;
+      }
+      dq = J.partialPivLu().solve(e);
+    } else {
+      return;
+    }
+    if (!allFinite(dq)) return;
+    const JointVector<S> qn = q + dq;
+    const S rn = residualOf(robot, qn, target, mode);
+    if (!(rn < res)) return;
+    q = qn;
+    res = rn;
+  }
+}
+
+template <class S> JointVector<S> toJoints(const SerialRobot<S>& robot, const JointVector<S>& raw) {
+  JointVector<S> q(raw.size());
+  for (int i = 0; i < raw.size(); ++i) q(i) = raw(i) - robot.joints()[i].offset;
+  return robot.wrap(q);
+}
+
+template <class S>
+void finish(const SerialRobot<S>& robot, const SE3<S>& target, ResidualMode mode,
+            const std::vector<JointVector<S>>& raws, Solution<S>& sol, Clock::time_point t0) {
+  int outside = 0;
+  for (const auto& raw : raws) {
+    JointVector<S> q = toJoints(robot, raw);
+    S res;
+    polish(robot, q, target, mode, res);
+    q = robot.wrap(q);
+    if (!robot.withinLimits(q)) {
+      ++outside;
+      continue;
+    }
+    sol.postures.push_back(q);
+    sol.residuals.push_back(res);
+  }
+  if (outside)
+    sol.notes.push_back(std::to_string(outside) + " posture(s) outside the joint limits dropped");
+  sol.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+template <class S> void requireRevolute(const SerialRobot<S>& robot, int n, const char* method) {
+  if (robot.dof() != n)
+    throw InvalidInput(std::string("ik method ") + method + ": needs a robot with " + std::to_string(n) +
+                       " joints, this one has " + std::to_string(robot.dof()));
+  for (int i = 0; i < n; ++i)
+    if (robot.joints()[i].type != JointType::Revolute)
+      throw InvalidInput(std::string("ik method ") + method + ": joint " + std::to_string(i + 1) +
+                         " is prismatic (closed forms here are for revolute joints)");
+}
+
+/// Common point of three lines (least squares) and the largest distance from it.
+template <class S> bool concurrentPoint(const std::array<Vec3<S>, 3>& v, const std::array<Vec3<S>, 3>& r,
+                                        const S& tol, Vec3<S>& c) {
+  using std::abs;
+  Mat3<S> A = Mat3<S>::Zero();
+  Vec3<S> b = Vec3<S>::Zero();
+  for (int i = 0; i < 3; ++i) {
+    const Mat3<S> P = Mat3<S>::Identity() - v[i] * v[i].transpose();
+    A += P;
+    b += P * r[i];
+  }
+  const Eigen::PartialPivLU<Mat3<S>> lu(A);
+  if (!(abs(lu.determinant()) > Tolerance<S>::input())) return false;  // parallel axes
+  c = lu.solve(b);
+  for (int i = 0; i < 3; ++i) {
+    const Vec3<S> d = (c - r[i]) - v[i] * v[i].dot(c - r[i]);
+    if (d.squaredNorm() > tol * tol) return false;
+  }
+  return true;
+}
+
+/// Planar 3R with parallel axes (joint indices j, j+1, j+2 of `robot`): E_j E_{j+1} E_{j+2} = X.
+/// Up to 2 solutions (raw angles). GF §10.3.2 (the planar arm after the T³ reduction: cosine
+/// rule for θ3, erratum E10.7; θ2 from X, Y, erratum E10.8)
+template <class S> std::vector<Vec3<S>> planar3R(const SerialRobot<S>& robot, int j, const SE3<S>& X,
+                                                 bool& doubleRoot, bool& degenerate) {
+  const auto& J = robot.joints();
+  const Vec3<S> u = J[j].axis;
+  auto P = [&](const Vec3<S>& x) { return Vec3<S>(x - u * u.dot(x)); };
+  const Vec3<S> r1 = J[j].point, r2 = J[j + 1].point, r3 = J[j + 2].point;
+  const Vec3<S> w = X.act(r3);
+  const Vec3<S> e = P(r2 - r1), f = P(r3 - r2);
+  const S D2 = P(w - r1).squaredNorm();
+  const Vec3<S> v2 = J[j + 1].axis;
+  const TrigRoots<S> t2 = solveLinearTrig<S>(S(2) * e.dot(f), S(2) * e.dot(v2.cross(f)),
+                                             D2 - e.squaredNorm() - f.squaredNorm());
+  doubleRoot = t2.doubleRoot;
+  std::vector<S> th2 = t2.angles;
+  if (t2.free) {
+    degenerate = true;
+    th2 = {S(0)};
+  }
+  std::vector<Vec3<S>> out;
+  const S L2 = robot.lengthScale() * robot.lengthScale();
+  for (const S& a2 : th2) {
+    const Vec3<S> a = J[j + 1].motion(a2).act(r3);
+    bool deg = false;
+    const S a1 = angleAbout<S>(J[j].axis, Vec3<S>(a - r1), Vec3<S>(w - r1), &deg, L2);
+    if (deg) degenerate = true;
+    const Mat3<S> R3 = rodrigues<S>(v2, a2).transpose() * rodrigues<S>(J[j].axis, a1).transpose() * X.rotation();
+    const Vec3<S> v3 = J[j + 2].axis;
+    Vec3<S> x = v3.cross(Vec3<S>::UnitX());
+    if (x.squaredNorm() < S(1) / S(4)) x = v3.cross(Vec3<S>::UnitY());
+    const S a3 = angleAbout<S>(v3, x, Vec3<S>(R3 * x), nullptr, S(1));
+    out.emplace_back(a1, a2, a3);
+  }
+  return out;
+}
+
+
+}  // namespace
+
+template <class S> TrigRoots<S> solveLinearTrig(const S& p, const S& q, const S& k) {
+  using std::abs;
+  using std::atan2;
+  using std::sqrt;
+  TrigRoots<S> out;
+  const S rho2 = p * p + q * q;
+  const S scale = std::max<S>(sqrt(rho2), abs(k));
+  if (rho2 <= Tolerance<S>::rank() * Tolerance<S>::rank() * scale * scale || scale == S(0)) {
+    out.free = abs(k) <= Tolerance<S>::rank() * (scale > S(0) ? scale : S(1)) || scale == S(0);
+    return out;  // p = q = 0: no solution unless k = 0 too
+  }
+  S disc = rho2 - k * k;
+  if (disc < S(0)) {
+    if (-disc > Tolerance<S>::rank() * rho2) return out;  // unreachable
+    disc = S(0);
+  }
+  if (disc <= Tolerance<S>::rank() * rho2) out.doubleRoot = true;
+  const S base = atan2(q, p), half = atan2(sqrt(disc), k);
+  out.angles = {base - half, base + half};
+  return out;
+}
+
+template <class S>
+WristAngles<S> wrist3R(const Vec3<S>& v1, const Vec3<S>& v2, const Vec3<S>& v3, const Mat3<S>& R) {
+  WristAngles<S> out;
+  // v1ᵀ e^{θ2 v2} v3 = (v1·v2)(v2·v3) + cos θ2 [v1·v3 − (v1·v2)(v2·v3)] + sin θ2 v1·(v2×v3).
+  const S c12 = v1.dot(v2) * v2.dot(v3);
+  const TrigRoots<S> t2 =
+      solveLinearTrig<S>(v1.dot(v3) - c12, v1.dot(v2.cross(v3)), S(v1.dot(R * v3)) - c12);
+  out.doubleRoot = t2.doubleRoot;
+  std::vector<S> th2 = t2.angles;
+  if (t2.free) th2 = {S(0)};  // v1 = ±v3 and v2 ⟂ both or equal: degenerate wrist
+  const Vec3<S> z = R * v3;
+  for (const S& a2 : th2) {
+    const Vec3<S> y = rodrigues<S>(v2, a2) * v3;  // the book's y = e^{θ2 ad v2} v3
+    bool gimbal = false;
+    const Vec3<S> yp = y - v1 * v1.dot(y);
+    gimbal = yp.squaredNorm() <= Tolerance<S>::identity(64);
+    // y'·z' = |y'|² cos θ1 and v1·(y'×z') = |y'|² sin θ1, i.e. −(y×v1)ᵀ R v3 (E5.1).
+    const S a1 = gimbal ? S(0) : angleAbout<S>(v1, y, z, nullptr, S(1));
+    if (gimbal) out.gimbal = true;
+    const Mat3<S> R3 = rodrigues<S>(v2, a2).transpose() * rodrigues<S>(v1, a1).transpose() * R;
+    Vec3<S> x = v3.cross(Vec3<S>::UnitX());
+    if (x.squaredNorm() < S(1) / S(4)) x = v3.cross(Vec3<S>::UnitY());
+    const S a3 = angleAbout<S>(v3, x, Vec3<S>(R3 * x), nullptr, S(1));
+    out.angles.emplace_back(a1, a2, a3);
+  }
+  return out;
+}
+
+template <class S> PieperTriple<S> findPieperTriple(const SerialRobot<S>& robot) {
+  PieperTriple<S> out;
+  if (robot.dof() != 6 || !robot.allRevolute()) return out;
+  const auto& J = robot.joints();
+  const S tol = Tolerance<S>::input();
+  for (int first : {3, 0, 1, 2}) {
+    std::array<Vec3<S>, 3> v, r;
+    for (int i = 0; i < 3; ++i) {
+      v[i] = J[first + i].axis;
+      r[i] = J[first + i].point;
+    }
+    const bool parallel = v[0].cross(v[1]).squaredNorm() <= tol * tol &&
+                          v[0].cross(v[2]).squaredNorm() <= tol * tol;
+    if (parallel) {
+      out.first = first;
+      out.concurrent = false;
+      out.direction = v[0];
+      return out;
+    }
+    Vec3<S> c;
+    if (concurrentPoint<S>(v, r, tol * robot.lengthScale(), c)) {
+      out.first = first;
+      out.concurrent = true;
+      out.point = c;
+      return out;
+    }
+  }
+  return out;
+}
+
+template <class S> bool isWrist(const SerialRobot<S>& robot) {
+  if (robot.dof() != 3 || !robot.allRevolute()) return false;
+  std::array<Vec3<S>, 3> v, r;
+  for (int i = 0; i < 3; ++i) {
+    v[i] = robot.joints()[i].axis;
+    r[i] = robot.joints()[i].point;
+  }
+  Vec3<S> c;
+  return concurrentPoint<S>(v, r, Tolerance<S>::input() * robot.lengthScale(), c);
+}
+
+template <class S> IkMethod classifyRobot(const SerialRobot<S>& robot) {
+  if (!robot.allRevolute())
+    throw InvalidInput("ik: the robot has a prismatic joint; the closed forms and the 6R solver "
+                       "need revolute joints");
+  if (robot.dof() == 3) return isWrist(robot) ? IkMethod::Wrist3R : IkMethod::Arm3R;
+  if (robot.dof() == 6) return findPieperTriple(robot).first >= 0 ? IkMethod::Pieper : IkMethod::General6R;
+  throw InvalidInput("ik: no method for a robot with " + std::to_string(robot.dof()) +
+                     " joints (3R wrists and arms, 6R robots)");
+}
+
+template <class S> Solution<S> solveWrist3R(const SerialRobot<S>& robot, const SE3<S>& target) {
+  const auto t0 = Clock::now();
+  requireRevolute(robot, 3, "wrist3r");
+  if (!isWrist(robot)) throw InvalidInput("ik method wrist3r: the three axes do not meet in a point");
+  Solution<S> sol;
+  sol.method = "wrist3r";
+  sol.expected_count = 2;
+  const auto& J = robot.joints();
+  const Mat3<S> R = target.rotation() * robot.home().rotation().transpose();
+  const WristAngles<S> w = wrist3R<S>(J[0].axis, J[1].axis, J[2].axis, R);
+  if (w.gimbal) {
+    sol.continuum = true;
+    sol.notes.push_back("gimbal singularity: θ1 and θ3 determined only in combination (θ1 = 0 returned)");
+  }
+  if (w.doubleRoot) sol.notes.push_back("double root: the two postures merge (boundary of the reachable set)");
+  std::vector<JointVector<S>> raws;
+  for (const auto& a : w.angles) raws.push_back(JointVector<S>(a));
+  finish(robot, target, ResidualMode::Rotation, raws, sol, t0);
+  return sol;
+}
+
+template <class S> Solution<S> solveArm3R(const SerialRobot<S>& robot, const SE3<S>& target) {
+  const auto t0 = Clock::now();
+  requireRevolute(robot, 3, "arm3r");
+  Solution<S> sol;
+  sol.method = "arm3r";
+  sol.expected_count = 4;
+  const auto& J = robot.joints();
+  const Vec3<S> p0 = robot.home().translation(), p = target.translation();
+  // a = e^{θ3 S3} p0, b = e^{−θ1 S1} p; invariants of the rotation about axis 2.
+  const Circle<S> ca = circleOf<S>(J[2].axis, J[2].point, p0, +1);
+  const Circle<S> cb = circleOf<S>(J[0].axis, J[0].point, p, -1);
+  const PairRoots<S> pr = solveCirclePair<S>(pointInvariants(ca, J[1].axis, J[1].point),
+                                             pointInvariants(cb, J[1].axis, J[1].point));
+  sol.notes = pr.notes;
+  sol.continuum = pr.continuum;
+  if (pr.doubleRoot) sol.notes.push_back("double root: two postures merge (on a bifurcation surface)");
+  std::vector<JointVector<S>> raws;
+  const S L2 = robot.lengthScale() * robot.lengthScale();
+  for (const auto& [a3, a1] : pr.angles) {
+    const Vec3<S> a = ca.at(a3), b = cb.at(a1);
+    bool deg = false;
+    const S a2 = angleAbout<S>(J[1].axis, Vec3<S>(a - J[1].point), Vec3<S>(b - J[1].point), &deg, L2);
+    if (deg) {
+      sol.continuum = true;
+      sol.notes.push_back("the point lies on axis 2: θ2 is free (θ2 = 0 returned)");
+    }
+    raws.push_back(Vec3<S>(a1, deg ? S(0) : a2, a3));
+  }
+  finish(robot, target, ResidualMode::Position, raws, sol, t0);
+  return sol;
+}
+
+namespace {
+
+/// Pieper robot with the special triple at joints 4-6 (first = 3) or 2-4 (first = 1).
+template <class S>
+std::vector<JointVector<S>> pieperCore(const SerialRobot<S>& robot, const PieperTriple<S>& tri,
+                                       const SE3<S>& target, Solution<S>& sol) {
+  const auto& J = robot.joints();
+  const SE3<S> A = target * robot.home().inverse();  // = E1 ··· E6
+  const S L2 = robot.lengthScale() * robot.lengthScale();
+  std::vector<JointVector<S>> raws;
+  // Sides of the circle pair: (joint, sign, transformed-by-A⁻¹?) and the middle joint.
+  int ja, jb, jm, sa, sb, sm;
+  if (tri.first == 3) {
+    ja = 2, sa = +1, jb = 0, sb = -1, jm = 1, sm = +1;  // E2 E3 x = E1⁻¹ A x
+  } else {
+    ja = 4, sa = -1, jb = 0, sb = +1, jm = 5, sm = -1;  // E6⁻¹ E5⁻¹ x = A⁻¹ E1 x
+  }
+  // Line of joint jb as seen on the b side (through A⁻¹ when the triple is 2-4).
+  const SE3<S> Bmap = tri.first == 3 ? SE3<S>() : A.inverse();
+  const Vec3<S> vb = Bmap.so3().act(J[jb].axis), rb = Bmap.act(J[jb].point);
+  const SE3<S> Xobj = tri.first == 3 ? A : A.inverse();  // the b-side object is Xobj applied
+  const Vec3<S> vm = J[jm].axis, rm = J[jm].point;
+  PairRoots<S> pr;
+  Circle<S> ca, cb;
+  if (tri.concurrent) {
+    ca = circleOf<S>(J[ja].axis, J[ja].point, tri.point, sa);
+    cb = circleOf<S>(vb, rb, Xobj.act(tri.point), sb);
+    pr = solveCirclePair<S>(pointInvariants(ca, vm, rm), pointInvariants(cb, vm, rm));
+  } else {
+    const Vec3<S> n0 = tri.direction;
+    const Vec3<S> nb = Xobj.so3().act(n0);
+    const S db = nb.dot(Xobj.translation());  // plane n0·y = 0 moved by Xobj
+    pr = solveCirclePair<S>(planeInvariants<S>(J[ja].axis, J[ja].point, n0, S(0), sa, vm, rm, &ca),
+                            planeInvariants<S>(vb, rb, nb, db, sb, vm, rm, &cb));
+  }
+  for (const auto& n : pr.notes) sol.notes.push_back(n);
+  if (pr.continuum) sol.continuum = true;
+  if (pr.doubleRoot) sol.notes.push_back("double root in the positioning quartic (postures merge)");
+  for (const auto& [phA, phB] : pr.angles) {
+    const Vec3<S> a = ca.at(phA), b = cb.at(phB);
+    bool deg = false;
+    const S psi = tri.concurrent
+                      ? angleAbout<S>(vm, Vec3<S>(a - rm), Vec3<S>(b - rm), &deg, L2)
+                      : angleAbout<S>(vm, a, b, &deg, S(1));
+    if (deg) {
+      sol.continuum = true;
+      sol.notes.push_back("wrist-type singularity: joint " + std::to_string(jm + 1) +
+                          " is free (0 returned)");
+    }
+    // The circles already carry the sign of their joint (a = e^{σφ S} x with σφ = σθ), so θ = φ.
+    const S thA = phA, thB = phB, thM = deg ? S(0) : S(sm) * psi;
+    JointVector<S> th = JointVector<S>::Zero(6);
+    th(ja) = thA;
+    th(jb) = thB;
+    th(jm) = thM;
+    // The motion left for the triple.
+    SE3<S> X;
+    int j0;
+    if (tri.first == 3) {
+      X = (J[0].motion(th(0)) * J[1].motion(th(1)) * J[2].motion(th(2))).inverse() * A;
+      j0 = 3;
+    } else {
+      X = J[0].motion(th(0)).inverse() * A * J[5].motion(th(5)).inverse() * J[4].motion(th(4)).inverse();
+      j0 = 1;
+    }
+    std::vector<Vec3<S>> tr;
+    if (tri.concurrent) {
+      const WristAngles<S> w = wrist3R<S>(J[j0].axis, J[j0 + 1].axis, J[j0 + 2].axis, X.rotation());
+      if (w.gimbal) {
+        sol.continuum = true;
+        sol.notes.push_back("wrist gimbal singularity: joints " + std::to_string(j0 + 1) + " and " +
+                            std::to_string(j0 + 3) + " determined only in combination");
+      }
+      if (w.doubleRoot) sol.notes.push_back("wrist double root (postures merge)");
+      tr = w.angles;
+    } else {
+      bool dbl = false, dg = false;
+      tr = planar3R<S>(robot, j0, X, dbl, dg);
+      if (dbl) sol.notes.push_back("planar arm double root (elbow straight: postures merge)");
+      if (dg) {
+        sol.continuum = true;
+        sol.notes.push_back("planar arm degenerate (a point on an axis)");
+      }
+    }
+    for (const auto& t : tr) {
+      JointVector<S> full = th;
+      full.segment(j0, 3) = t;
+      raws.push_back(full);
+    }
+  }
+  return raws;
+}
+
+}  // namespace
+
+template <class S> Solution<S> solvePieper(const SerialRobot<S>& robot, const SE3<S>& target) {
+  const auto t0 = Clock::now();
+  requireRevolute(robot, 6, "pieper");
+  const PieperTriple<S> tri = findPieperTriple(robot);
+  if (tri.first < 0)
+    throw InvalidInput("ik method pieper: no three consecutive axes meet in a point or are parallel");
+  Solution<S> sol;
+  sol.method = "pieper";
+  sol.expected_count = 8;
+  sol.notes.push_back(std::string("axes ") + std::to_string(tri.first + 1) + "-" +
+                      std::to_string(tri.first + 3) + (tri.concurrent ? " meet in a point" : " are parallel"));
+  std::vector<JointVector<S>> raws;
+  if (tri.first == 3 || tri.first == 1) {
+    raws = pieperCore(robot, tri, target, sol);
+  } else {  // 1-3 or 3-5: solve the reversed robot (T⁻¹ with joints 6..1), where they are 4-6 / 2-4
+    const SerialRobot<S> rev = robot.reversed();
+    PieperTriple<S> rt = tri;
+    rt.first = 3 - tri.first;
+    // the reversed robot's coordinates are the tool-home frame: point p ↦ M⁻¹ p
+    rt.point = robot.home().inverse().act(tri.point);
+    rt.direction = robot.home().inverse().so3().act(tri.direction);
+    for (auto& r : pieperCore(rev, rt, SE3<S>(target.inverse()), sol)) raws.push_back(r.reverse().eval());
+  }
+  finish(robot, target, ResidualMode::Pose, raws, sol, t0);
+  return sol;
+}
+
+template <class S>
+Solution<S> solveClosedForm(const SerialRobot<S>& robot, const SE3<S>& target, IkMethod method) {
+  if (method == IkMethod::Auto) method = classifyRobot(robot);
+  switch (method) {
+    case IkMethod::Wrist3R: return solveWrist3R(robot, target);
+    case IkMethod::Arm3R: return solveArm3R(robot, target);
+    case IkMethod::Pieper: return solvePieper(robot, target);
+    default: break;
+  }
+  throw InvalidInput("ik: method general6r is not a closed form (this robot has no three "
+                     "consecutive axes meeting or parallel)");
+}
+
+#define SOMA_CFIK_INSTANTIATE(S)                                                               \
+  template TrigRoots<S> solveLinearTrig<S>(const S&, const S&, const S&);                     \
+  template WristAngles<S> wrist3R<S>(const Vec3<S>&, const Vec3<S>&, const Vec3<S>&,           \
+                                     const Mat3<S>&);                                          \
+  template PieperTriple<S> findPieperTriple<S>(const SerialRobot<S>&);                         \
+  template bool isWrist<S>(const SerialRobot<S>&);                                             \
+  template IkMethod classifyRobot<S>(const SerialRobot<S>&);                                   \
+  template Solution<S> solveWrist3R<S>(const SerialRobot<S>&, const SE3<S>&);                  \
+  template Solution<S> solveArm3R<S>(const SerialRobot<S>&, const SE3<S>&);                    \
+  template Solution<S> solvePieper<S>(const SerialRobot<S>&, const SE3<S>&);                   \
+  template Solution<S> solveClosedForm<S>(const SerialRobot<S>&, const SE3<S>&, IkMethod);
+
+}  // namespace soma
