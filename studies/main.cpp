@@ -3,10 +3,12 @@
 //   soma study run ID... [--scalar T] [--bits N] [--out DIR] [--no-figures] [--json]
 //   soma report [--out DIR] [--only GLOB]... [--scalar T] [--bits N] [--no-figures]
 //   soma pose POSE.json [--scalar T] [--bits N] [--json]
+//   soma planar SCENE.json [--json] [--png FILE]
 // Exit codes: 0 every check passed, 1 a check or study failed, 2 bad input (usage, unknown
 // study or scalar, unwritable output).
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/scalar.hpp"
+#include "soma/studies/planar_command.hpp"
 #include "soma/studies/pose_command.hpp"
 #include "soma/studies/report.hpp"
 #include "soma/studies/runner.hpp"
@@ -179,6 +181,18 @@ int main(int argc, char** argv) {
   addScalarOptions(pose, poseScalar);
   pose->add_flag("--json", poseJson, "print one JSON object");
 
+  // soma planar
+  std::string planarFile, planarPng;
+  bool planarJson = false;
+  auto* planar = app.add_subcommand(
+      "planar", "planar kinematics of a scene: Burmester synthesis of 3-5 positions {x, y, angle}, or a "
+                "4-bar's Grashof class, circuits and GF 5.3 invariants of its coupler motion");
+  planar->add_option("file", planarFile, "scene JSON: {\"positions\": [{\"x\", \"y\", \"angle\"}, ...]} or "
+                                         "{\"fourbar\": {...}, \"crank_angle\"}")
+      ->required();
+  planar->add_flag("--json", planarJson, "print one JSON object");
+  planar->add_option("--png", planarPng, "write a figure to this PNG file");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -191,6 +205,7 @@ int main(int argc, char** argv) {
     if (run->parsed()) return studyRun(runIds, runScalar, runOut, !runNoFigures, runJson);
     if (rep->parsed()) return report(only, repScalar, repOut, !repNoFigures, commandLine(argc, argv));
     if (pose->parsed()) return poseCommand(poseFile, applyScalar(poseScalar), poseJson, std::cout);
+    if (planar->parsed()) return planarCommand(planarFile, planarJson, planarPng, std::cout);
   } catch (const SelectionError& e) {
     std::cerr << "soma: " << e.what() << "\n";
     return kExitBadInput;
