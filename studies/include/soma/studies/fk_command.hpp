@@ -1,0 +1,16 @@
+#pragma once
+// `soma fk ROBOT.json --joints q1,q2,... [--json]` (DESIGN §6): the tool pose T(q), and the
+// singularity measures of the configuration, in any scalar type.
+#include "soma/algebra/scalar.hpp"
+
+#include <filesystem>
+#include <ostream>
+#include <string>
+
+namespace soma::studies {
+
+/// Returns 0; throws InvalidInput for a bad robot file or joint list (the caller exits 2).
+int fkCommand(const std::filesystem::path& robot, const std::string& joints, ScalarKind scalar,
+              bool json, std::ostream& out);
+
+}  // namespace soma::studies

@@ -1,0 +1,65 @@
+#include "soma/studies/fk_command.hpp"
+
+#include "soma/studies/robot_file.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+
+namespace soma::studies {
+
+namespace {
+template <class S> int fkImpl(const std::filesystem::path& file, const std::string& joints, bool json,
+                              std::ostream& out) {
+  const RobotFile<S> rf = readRobot<S>(file);
+  const JointVector<S> q = parseJoints<S>(joints, rf);
+  const auto t0 = std::chrono::steady_clock::now();
+  const SE3<S> T = rf.robot.fk(q);
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const auto sm = singularityMeasures(rf.robot, q);
+  const Mat3<S> R = T.rotation();
+  const double unit = rf.degrees ? 180.0 / pi<double>() : 1.0;
+  if (json) {
+    nlohmann::json j;
+    j["robot"] = file.string();
+    j["name"] = rf.robot.name();
+    j["angles"] = rf.degrees ? "degrees" : "radians";
+    nlohmann::json jq = nlohmann::json::array();
+    for (int i = 0; i < q.size(); ++i)
+      jq.push_back(toDouble(q(i)) * (rf.robot.joints()[i].type == JointType::Revolute ? unit : 1.0));
+    j["joints"] = jq;
+    j["scalar"] = std::string(scalarName<S>());
+    j["seconds"] = secs;
+    nlohmann::json rot = nlohmann::json::array();
+    for (int r = 0; r < 3; ++r) rot.push_back({toDouble(R(r, 0)), toDouble(R(r, 1)), toDouble(R(r, 2))});
+    j["pose"] = {{"rotation", rot},
+                 {"translation",
+                  {toDouble(T.translation()(0)), toDouble(T.translation()(1)), toDouble(T.translation()(2))}}};
+    j["singularity"] = {{"manipulability", toDouble(sm.manipulability)},
+                        {"smallest_singular_value", toDouble(sm.smallestSingularValue)},
+                        {"condition", toDouble(sm.condition)},
+                        {"rank", sm.rank}};
+    out << j.dump(2) << "\n";
+    return 0;
+  }
+  out << fmt::format("robot: {} ({} joints)   scalar: {}\n", rf.robot.name(), rf.robot.dof(), scalarName<S>());
+  out << "rotation:\n";
+  for (int r = 0; r < 3; ++r)
+    out << fmt::format("  {:>24} {:>24} {:>24}\n", toString(R(r, 0), 17), toString(R(r, 1), 17),
+                       toString(R(r, 2), 17));
+  out << fmt::format("translation: {} {} {}\n", toString(T.translation()(0), 17),
+                     toString(T.translation()(1), 17), toString(T.translation()(2), 17));
+  out << fmt::format("singularity: manipulability {}  smallest singular value {}  condition {}  rank {}\n",
+                     toString(sm.manipulability, 6), toString(sm.smallestSingularValue, 6),
+                     toString(sm.condition, 6), sm.rank);
+  return 0;
+}
+}  // namespace
+
+int fkCommand(const std::filesystem::path& robot, const std::string& joints, ScalarKind scalar,
+              bool json, std::ostream& out) {
+  return withScalar(scalar, [&]<class S>() { return fkImpl<S>(robot, joints, json, out); });
+}
+
+}  // namespace soma::studies
