@@ -1,0 +1,690 @@
+#pragma once
+// Template bodies of the general-6R solver (general_6r.hpp). Included only by the
+// instantiating TUs geometry/src/serial/general_6r*.cpp.
+#include "soma/geometry/serial/general_6r.hpp"
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <chrono>
+#include <complex>
+#include <random>
+#include <type_traits>
+
+namespace soma {
+namespace detail6r {
+
+template <class S> using V14 = Eigen::Matrix<S, 14, 1>;
+template <class S> using M14x9 = Eigen::Matrix<S, 14, 9>;
+template <class S> using M14x8 = Eigen::Matrix<S, 14, 8>;
+template <class S> using M6x9 = Eigen::Matrix<S, 6, 9>;
+template <class S> using M12 = Eigen::Matrix<S, 12, 12>;
+template <class S> using M24 = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>;
+template <class S> using MX = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>;
+template <class S> using VX = Eigen::Matrix<S, Eigen::Dynamic, 1>;
+
+/// The next rung of the scalar ladder (mpfr is the last).
+template <class S> struct NextScalar { using type = void; };
+template <> struct NextScalar<float> { using type = double; };
+template <> struct NextScalar<double> { using type = long double; };
+template <> struct NextScalar<long double> { using type = __float128; };
+template <> struct NextScalar<__float128> { using type = mpfr::mpreal; };
+
+/// Constant part of a link: Tz(d)·Tx(a)·Rx(α).
+template <class S> struct Link {
+  S a, d, ca, sa;
+};
+template <class S> Link<S> linkOf(const DHRow<S>& r) {
+  using std::cos;
+  using std::sin;
+  return {r.a, r.d, cos(r.alpha), sin(r.alpha)};
+}
+template <class S> Vec3<S> rx(const Link<S>& k, const Vec3<S>& v) {
+  return Vec3<S>(v.x(), k.ca * v.y() - k.sa * v.z(), k.sa * v.y() + k.ca * v.z());
+}
+template <class S> Vec3<S> rxT(const Link<S>& k, const Vec3<S>& v) {
+  return Vec3<S>(v.x(), k.ca * v.y() + k.sa * v.z(), -k.sa * v.y() + k.ca * v.z());
+}
+/// Rz(g·π/2) and Rz(−g·π/2) for g = 0, 1, 2: exact (the interpolation grid).
+template <class S> Vec3<S> rotGrid(const Vec3<S>& v, int g) {
+  if (g == 0) return v;
+  if (g == 1) return Vec3<S>(-v.y(), v.x(), v.z());
+  return Vec3<S>(-v.x(), -v.y(), v.z());
+}
+template <class S> Vec3<S> rotGridInv(const Vec3<S>& v, int g) {
+  if (g == 0) return v;
+  if (g == 1) return Vec3<S>(v.y(), -v.x(), v.z());
+  return Vec3<S>(-v.x(), -v.y(), v.z());
+}
+
+/// Raghavan–Roth's 14 quantities of a line through p with direction l:
+/// p, l, p·p, p·l, p×l, (p·p)l − 2(p·l)p. Closed under rigid motions, linearly in R.
+template <class S> V14<S> lineQuantities(const Vec3<S>& p, const Vec3<S>& l) {
+  V14<S> f;
+  const S pp = p.dot(p), pl = p.dot(l);
+  f.template segment<3>(0) = p;
+  f.template segment<3>(3) = l;
+  f(6) = pp;
+  f(7) = pl;
+  f.template segment<3>(8) = p.cross(l);
+  f.template segment<3>(11) = pp * l - S(2) * pl * p;
+  return f;
+}
+
+/// Values at θ = 0, π/2, π of a + b cos θ + c sin θ → (a, b, c), in place along one axis.
+template <class S, std::size_t N> void gridToTrig(std::array<V14<S>, N>& F, int stride, int n) {
+  for (int base = 0; base < n; ++base) {
+    if ((base / stride) % 3 != 0) continue;
+    const V14<S> v0 = F[base], v1 = F[base + stride], v2 = F[base + 2 * stride];
+    const V14<S> a = (v0 + v2) / S(2);
+    F[base] = a;
+    F[base + stride] = (v0 - v2) / S(2);
+    F[base + 2 * stride] = v1 - a;
+  }
+}
+
+/// Coefficients of the half-angle substitution: (1, cos, sin)·(1 + x²) = rows of powers 1, x, x².
+template <class S> S halfAngle(int trig, int power) {
+  static const int t[3][3] = {{1, 0, 1}, {1, 0, -1}, {0, 2, 0}};
+  return S(t[trig][power]);
+}
+
+/// 6×9 trigonometric rows in (θ4, θ5) → the 12×12 polynomial block: rows r and 6 + r hold the
+/// row polynomial in x4^j x5^k and x4 times it (column j*3 + k, j ≤ 3, k ≤ 2).
+template <class S> M12<S> toPolynomialBlock(const M6x9<S>& X) {
+  M12<S> M = M12<S>::Zero();
+  for (int r = 0; r < 6; ++r)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) {
+        S y = S(0);
+        for (int i4 = 0; i4 < 3; ++i4) {
+          const S h4 = halfAngle<S>(i4, j);
+          if (h4 == S(0)) continue;
+          for (int i5 = 0; i5 < 3; ++i5) {
+            const S h5 = halfAngle<S>(i5, k);
+            if (h5 != S(0)) y += h4 * h5 * X(r, i4 * 3 + i5);
+          }
+        }
+        M(r, j * 3 + k) = y;
+        M(6 + r, (j + 1) * 3 + k) = y;
+      }
+  return M;
+}
+
+/// What the eigenproblem produced: candidate total joint angles (θ_i + q_i) in the unit-scaled
+/// problem, and its diagnostics.
+template <class S> struct Core {
+  std::vector<std::array<S, 6>> phi;
+  std::vector<S> x3;  ///< the real eigenvalue each candidate came from
+  int complexCount = 0;
+  double rcond = 0, beta = 0, minGap = 0, qRank = 0;
+  bool suspicious = false;
+  std::vector<std::string> notes;
+};
+
+/// Angle of the ratio of consecutive entries of a vector ∝ (1, x, x², …): θ = 2·atan(x),
+/// least squares over all pairs, θ = π when x = ∞.
+template <class S> S halfAngleFromPairs(const S& num, const S& den) {
+  using std::atan2;
+  return S(2) * atan2(num, den);
+}
+
+// GF §11.5 (16 postures of the general 6R); Raghavan–Roth elimination, Manocha–Canny eigenproblem.
+template <class S>
+Core<S> eigenCore(const Robot6R<S>& rb, const Mat3<S>& RT, const Vec3<S>& tT) {
+  using std::abs;
+  using std::atan;
+  using std::atan2;
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  Core<S> out;
+  std::array<Link<S>, 6> L;
+  for (int i = 0; i < 6; ++i) L[i] = linkOf(rb[i]);
+  const Vec3<S> ez(S(0), S(0), S(1));
+
+  // Left side G2·Rz(θ3)·G3·Rz(θ4)·G4·Rz(θ5)·G5 applied to (origin, e_z), on the 3×3×3 grid.
+  std::array<V14<S>, 27> F;
+  {
+    const Vec3<S> p5(L[4].a, S(0), L[4].d), l5 = rx(L[4], ez);
+    for (int g5 = 0; g5 < 3; ++g5) {
+      const Vec3<S> p4 = rx(L[3], rotGrid(p5, g5)) + Vec3<S>(L[3].a, S(0), L[3].d);
+      const Vec3<S> l4 = rx(L[3], rotGrid(l5, g5));
+      for (int g4 = 0; g4 < 3; ++g4) {
+        const Vec3<S> p3 = rx(L[2], rotGrid(p4, g4)) + Vec3<S>(L[2].a, S(0), L[2].d);
+        const Vec3<S> l3 = rx(L[2], rotGrid(l4, g4));
+        for (int g3 = 0; g3 < 3; ++g3) {
+          const Vec3<S> p2 = rx(L[1], rotGrid(p3, g3)) + Vec3<S>(L[1].a, S(0), L[1].d);
+          const Vec3<S> l2 = rx(L[1], rotGrid(l3, g3));
+          F[g3 * 9 + g4 * 3 + g5] = lineQuantities(p2, l2);
+        }
+      }
+    }
+  }
+  gridToTrig(F, 1, 27);
+  gridToTrig(F, 3, 27);
+  gridToTrig(F, 9, 27);
+
+  // Right side Rz(−θ2)·G1⁻¹·Rz(−θ1)·T·G6⁻¹ applied to (origin, e_z), on the 3×3 grid.
+  std::array<V14<S>, 9> H;
+  {
+    const Vec3<S> p6 = rxT(L[5], Vec3<S>(-L[5].a, S(0), -L[5].d)), l6 = rxT(L[5], ez);
+    const Vec3<S> pT = RT * p6 + tT, lT = RT * l6;
+    for (int g1 = 0; g1 < 3; ++g1) {
+      const Vec3<S> p1 = rxT(L[0], Vec3<S>(rotGridInv(pT, g1) - Vec3<S>(L[0].a, S(0), L[0].d)));
+      const Vec3<S> l1 = rxT(L[0], rotGridInv(lT, g1));
+      for (int g2 = 0; g2 < 3; ++g2)
+        H[g1 * 3 + g2] = lineQuantities(rotGridInv(p1, g2), rotGridInv(l1, g2));
+    }
+  }
+  gridToTrig(H, 1, 9);
+  gridToTrig(H, 3, 9);
+
+  // P_k (k = 1, cos θ3, sin θ3): 14×9 in the monomials of θ4, θ5; Q: 14×8 in those of θ1, θ2.
+  std::array<M14x9<S>, 3> P;
+  for (int i3 = 0; i3 < 3; ++i3)
+    for (int c = 0; c < 9; ++c) P[i3].col(c) = F[i3 * 9 + c];
+  P[0].col(0) -= H[0];
+  M14x8<S> Q;
+  for (int c = 0; c < 8; ++c) Q.col(c) = H[c + 1];
+
+  // Left null space of Q (6×14): the last 6 columns of the Householder Q of Q.
+  Eigen::ColPivHouseholderQR<MX<S>> qr{MX<S>(Q)};
+  const S r00 = abs(qr.matrixQR()(0, 0)), r77 = abs(qr.matrixQR()(7, 7));
+  out.qRank = r00 > S(0) ? toDouble(r77 / r00) : 0.0;
+  if (!(r77 > Tolerance<S>::rank() * r00)) {
+    out.suspicious = true;
+    out.notes.push_back("the 14×8 matrix of the θ1, θ2 monomials is rank-deficient (|r88/r11| = " +
+                        toString(toDouble(out.qRank), 3) +
+                        "): special geometry, θ1 and θ2 are not determined by elimination");
+  }
+  const MX<S> Hq = qr.householderQ();
+  const Eigen::Matrix<S, 6, 14> N = Hq.rightCols(6).transpose();
+  std::array<M6x9<S>, 3> Sig;
+  for (int k = 0; k < 3; ++k) Sig[k] = N * P[k];
+
+  // θ3 = β + ψ, x3 = tan(ψ/2): M(x3) = (Σ1 − Σc')x3² + 2Σs'x3 + (Σ1 + Σc'). Pick β so that the
+  // leading matrix is invertible (β = 0 unless θ3 = π is, nearly, a root: the root at infinity).
+  M12<S> A, B, C;
+  S rc = S(-1), beta = S(0);
+  Eigen::PartialPivLU<MX<S>> luA(12);
+  auto build = [&](const S& b) {
+    const S cb = cos(b), sb = sin(b);
+    const M6x9<S> Sc = Sig[1] * cb + Sig[2] * sb, Ss = Sig[2] * cb - Sig[1] * sb;
+    A = toPolynomialBlock<S>(M6x9<S>(Sig[0] - Sc));
+    B = toPolynomialBlock<S>(M6x9<S>(S(2) * Ss));
+    C = toPolynomialBlock<S>(M6x9<S>(Sig[0] + Sc));
+    // Row scaling (does not move the eigenvalues).
+    for (int r = 0; r < 12; ++r) {
+      S m = S(0);
+      for (int c = 0; c < 12; ++c) m = std::max<S>(m, std::max<S>(abs(A(r, c)), std::max<S>(abs(B(r, c)), abs(C(r, c)))));
+      if (m > S(0)) {
+        A.row(r) /= m;
+        B.row(r) /= m;
+        C.row(r) /= m;
+      }
+    }
+    luA.compute(MX<S>(A));
+    return S(luA.rcond());
+  };
+  rc = build(S(0));
+  const S rcGood = Tolerance<S>::precision(2);
+  if (!(rc > rcGood)) {
+    // Möbius change of the half-angle variable: try offsets, keep the best conditioned.
+    S bestRc = rc, bestBeta = S(0);
+    for (int k = 1; k <= 6; ++k) {
+      const S b = pi<S>() * S(2 * k - 1) / S(7);
+      const S r = build(b);
+      if (r > bestRc) {
+        bestRc = r;
+        bestBeta = b;
+      }
+    }
+    out.notes.push_back("leading matrix nearly singular at θ3 offset 0 (rcond " +
+                        toString(toDouble(rc), 3) + "): θ3 = π is near a root; half-angle "
+                        "variable rotated by β = " + toString(toDouble(bestBeta), 4) +
+                        " (rcond " + toString(toDouble(bestRc), 3) + ")");
+    rc = build(bestBeta);
+    beta = bestBeta;
+  }
+  out.rcond = toDouble(rc);
+  out.beta = toDouble(beta);
+
+  std::vector<std::complex<S>> lambdas;
+  if (rc > Tolerance<S>::rank()) {
+    M24<S> K = M24<S>::Zero(24, 24);
+    K.topRightCorner(12, 12).setIdentity();
+    K.bottomLeftCorner(12, 12) = -luA.solve(MX<S>(C));
+    K.bottomRightCorner(12, 12) = -luA.solve(MX<S>(B));
+    Eigen::EigenSolver<M24<S>> es(K, false);
+    if (es.info() != Eigen::Success) {
+      out.suspicious = true;
+      out.notes.push_back("24×24 eigenvalue iteration did not converge");
+      return out;
+    }
+    for (int i = 0; i < 24; ++i) lambdas.push_back(es.eigenvalues()(i));
+  } else {
+    // Leading matrix singular for every offset: the generalized eigenproblem of the pencil
+    // [[0, I], [−C, −B]] − x [[I, 0], [0, A]] (infinite eigenvalues are dropped).
+    M24<S> L0 = M24<S>::Zero(24, 24), L1 = M24<S>::Zero(24, 24);
+    L0.topRightCorner(12, 12).setIdentity();
+    L0.bottomLeftCorner(12, 12) = -C;
+    L0.bottomRightCorner(12, 12) = -B;
+    L1.topLeftCorner(12, 12).setIdentity();
+    L1.bottomRightCorner(12, 12) = A;
+    Eigen::GeneralizedEigenSolver<M24<S>> ges(L0, L1, false);
+    out.notes.push_back("leading matrix singular for every θ3 offset: generalized eigenproblem "
+                        "(QZ) of the 24×24 pencil");
+    out.suspicious = true;
+    if (ges.info() != Eigen::Success) return out;
+    for (int i = 0; i < 24; ++i) {
+      const S be = ges.betas()(i);
+      const std::complex<S> al = ges.alphas()(i);
+      if (abs(be) > Tolerance<S>::rank() * (abs(al) + abs(be)))
+        lambdas.push_back(std::complex<S>(al.real() / be, al.imag() / be));
+    }
+  }
+
+  // The extraneous factor (1 + x3²)⁴: 4 eigenvalues at +i and 4 at −i (invariant under β).
+  const S extTol = Tolerance<S>::precision(3);  // a 4-fold root moves by eps^(1/4)
+  const S realTol = Tolerance<S>::precision(2);
+  int nExtra = 0;
+  std::vector<S> reals;
+  for (const auto& z : lambdas) {
+    const S dp = abs(z - std::complex<S>(S(0), S(1))), dm = abs(z + std::complex<S>(S(0), S(1)));
+    if (dp < extTol * S(16) || dm < extTol * S(16)) {
+      ++nExtra;
+      continue;
+    }
+    if (abs(z.imag()) <= realTol * (S(1) + abs(z))) reals.push_back(z.real());
+  }
+  out.complexCount = int(lambdas.size()) - nExtra;
+  if (out.complexCount != 16) {
+    out.suspicious = true;
+    out.notes.push_back(std::to_string(out.complexCount) +
+                        " eigenvalues besides x3 = ±i (16 expected)");
+  }
+  std::sort(reals.begin(), reals.end());
+  S minGap = S(1);
+  for (std::size_t i = 1; i < reals.size(); ++i) {
+    const S g = abs(reals[i] - reals[i - 1]) / (S(1) + abs(reals[i]));
+    minGap = std::min<S>(minGap, g);
+  }
+  out.minGap = toDouble(minGap);
+  if (reals.size() > 1 && minGap < Tolerance<S>::precision(2)) {
+    out.suspicious = true;
+    out.notes.push_back("clustered real eigenvalues (relative gap " + toString(toDouble(minGap), 3) +
+                        ")");
+  }
+
+  // Back-substitution for each real x3.
+  for (const S& x : reals) {
+    const M12<S> M = (A * x + B) * x + C;
+    Eigen::PartialPivLU<MX<S>> lu{MX<S>(M)};
+    VX<S> v = VX<S>::Ones(12);
+    for (int it = 0; it < 2; ++it) {
+      v = lu.solve(v);
+      const S n2 = v.squaredNorm();
+      if (!(n2 > S(0)) || !isFinite(n2)) break;
+      v /= sqrt(n2);
+    }
+    if (!allFinite(v)) {  // an exact zero pivot: the kernel from a full-pivot LU
+      Eigen::FullPivLU<MX<S>> flu{MX<S>(M)};
+      flu.setThreshold(Tolerance<S>::sqrtEpsilon());
+      const auto ker = flu.kernel();
+      if (ker.cols() < 1) continue;
+      v = ker.col(0);
+    }
+    S n4 = S(0), d4 = S(0), n5 = S(0), d5 = S(0);
+    for (int j = 0; j < 4; ++j)
+      for (int k = 0; k < 3; ++k) {
+        const S vj = v(j * 3 + k);
+        if (j < 3) {
+          n4 += v((j + 1) * 3 + k) * vj;
+          d4 += vj * vj;
+        }
+        if (k < 2) {
+          n5 += v(j * 3 + k + 1) * vj;
+          d5 += vj * vj;
+        }
+      }
+    std::array<S, 6> phi;
+    phi[2] = beta + S(2) * atan(x);
+    phi[3] = halfAngleFromPairs(n4, d4);
+    phi[4] = halfAngleFromPairs(n5, d5);
+    const S c3 = cos(phi[2]), s3 = sin(phi[2]);
+    const S t4[3] = {S(1), cos(phi[3]), sin(phi[3])};
+    const S t5[3] = {S(1), cos(phi[4]), sin(phi[4])};
+    Eigen::Matrix<S, 9, 1> m45;
+    for (int i4 = 0; i4 < 3; ++i4)
+      for (int i5 = 0; i5 < 3; ++i5) m45(i4 * 3 + i5) = t4[i4] * t5[i5];
+    const V14<S> rhs = (P[0] + P[1] * c3 + P[2] * s3) * m45;
+    const VX<S> u = qr.solve(VX<S>(rhs));
+    // u = (c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2)
+    phi[0] = atan2(u(5), u(2));
+    phi[1] = atan2(u(1), u(0));
+    // θ6 from the chain: Rz(θ6)·Rx(α6) = (A1···A5)ᵀ-rotation · R_T.
+    Mat3<S> R = Mat3<S>::Identity();
+    for (int i = 0; i < 5; ++i) {
+      const S c = cos(phi[i]), s = sin(phi[i]);
+      Mat3<S> Ai;
+      Ai << c, -s * L[i].ca, s * L[i].sa, s, c * L[i].ca, -c * L[i].sa, S(0), L[i].sa, L[i].ca;
+      R = R * Ai;
+    }
+    const Mat3<S> R6 = R.transpose() * RT;
+    phi[5] = atan2(R6(1, 0), R6(0, 0));
+    out.phi.push_back(phi);
+    out.x3.push_back(x);
+  }
+  return out;
+}
+
+template <class S> S wrapAngle(S a) {
+  using std::atan2;
+  using std::cos;
+  using std::sin;
+  return atan2(sin(a), cos(a));
+}
+
+template <class S> S lengthScale(const Robot6R<S>& robot, const Vec3<S>& t) {
+  using std::abs;
+  S L = t.template lpNorm<Eigen::Infinity>();
+  for (const auto& r : robot) L = std::max<S>(L, std::max<S>(abs(r.a), abs(r.d)));
+  return L > S(0) ? L : S(1);
+}
+
+}  // namespace detail6r
+
+// GF §3.4 / §4.5 (forward kinematics of a DH chain)
+template <class S> SE3<S> general6rForward(const Robot6R<S>& robot, const std::array<S, 6>& q) {
+  SE3<S> T = SE3<S>::Identity();
+  for (int i = 0; i < 6; ++i) T = T * dhTransform(robot[i], q[i]);
+  return T;
+}
+
+template <class S>
+S general6rResidual(const Robot6R<S>& robot, const SE3<S>& target, const std::array<S, 6>& q) {
+  const SE3<S> T = general6rForward(robot, q);
+  const S L = detail6r::lengthScale(robot, target.translation());
+  const S er = (T.rotation() - target.rotation()).norm();
+  const S et = (T.translation() - target.translation()).norm() / L;
+  return std::max<S>(er, et);
+}
+
+// Newton steps on the pose equations (spatial Jacobian, GF §4.5).
+template <class S>
+std::array<S, 6> polishGeneral6R(const Robot6R<S>& robot, const SE3<S>& target,
+                                 std::array<S, 6> q, int iterations) {
+  const Mat3<S> RT = target.rotation();
+  const Vec3<S> tT = target.translation();
+  const S L = detail6r::lengthScale(robot, tT);
+  auto evaluate = [&](const std::array<S, 6>& qq, Eigen::Matrix<S, 6, 6>* J) {
+    Mat3<S> R = Mat3<S>::Identity();
+    Vec3<S> t = Vec3<S>::Zero();
+    std::array<Vec3<S>, 6> z, o;
+    for (int i = 0; i < 6; ++i) {
+      z[i] = R.col(2);
+      o[i] = t;
+      const SE3<S> A = dhTransform(robot[i], qq[i]);
+      t = t + R * A.translation();
+      R = R * A.rotation();
+    }
+    const Mat3<S> E = RT * R.transpose();
+    Vec6<S> e;
+    e << (E(2, 1) - E(1, 2)) / S(2), (E(0, 2) - E(2, 0)) / S(2), (E(1, 0) - E(0, 1)) / S(2),
+        (tT - t) / L;
+    if (J)
+      for (int i = 0; i < 6; ++i) {
+        J->col(i).template head<3>() = z[i];
+        J->col(i).template tail<3>() = z[i].cross(t - o[i]) / L;
+      }
+    return e;
+  };
+  Eigen::Matrix<S, 6, 6> J;
+  Vec6<S> e = evaluate(q, &J);
+  S err = e.squaredNorm();
+  for (int it = 0; it < iterations; ++it) {
+    const detail6r::VX<S> dq = Eigen::PartialPivLU<detail6r::MX<S>>(detail6r::MX<S>(J)).solve(detail6r::VX<S>(e));
+    if (!allFinite(dq)) break;
+    std::array<S, 6> qn = q;
+    for (int i = 0; i < 6; ++i) qn[i] += dq(i);
+    Eigen::Matrix<S, 6, 6> Jn;
+    const Vec6<S> en = evaluate(qn, &Jn);
+    const S errn = en.squaredNorm();
+    if (!(errn < err)) break;
+    q = qn;
+    e = en;
+    J = Jn;
+    err = errn;
+    if (err <= Tolerance<S>::epsilon() * Tolerance<S>::epsilon()) break;
+  }
+  return q;
+}
+
+template <class S>
+General6RSolution<S> solveGeneral6R(const Robot6R<S>& robot, const SE3<S>& target,
+                                    const General6ROptions& options) {
+  using std::abs;
+  const auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i < 6; ++i) {
+    const auto& r = robot[i];
+    if (r.type != JointType::Revolute)
+      throw InvalidInput("general 6R: joint " + std::to_string(i + 1) +
+                         " is prismatic (the general-6R solver needs six revolute joints)");
+    if (!isFinite(r.a) || !isFinite(r.alpha) || !isFinite(r.d) || !isFinite(r.theta))
+      throw InvalidInput("general 6R: DH row " + std::to_string(i + 1) +
+                         " has a NaN or infinite entry");
+  }
+  if (!allFinite(target.translation()) || !allFinite(target.quaternion().coeffs()))
+    throw InvalidInput("general 6R: target pose has a NaN or infinite entry");
+
+  General6RSolution<S> sol;
+  sol.method = "general6r";
+  sol.expected_count = 16;
+  sol.solved_in = std::string(scalarName<S>());
+
+  // Unit length scale: angles are unchanged.
+  const S L = detail6r::lengthScale(robot, target.translation());
+  Robot6R<S> rn = robot;
+  for (auto& r : rn) {
+    r.a /= L;
+    r.d /= L;
+    r.theta = S(0);
+  }
+  const Mat3<S> RT = target.rotation();
+  const Vec3<S> tT = target.translation() / L;
+  const SE3<S> Tn(target.so3(), tT);
+
+  const detail6r::Core<S> core = detail6r::eigenCore(rn, RT, tT);
+  sol.complex_count = core.complexCount;
+  sol.leading_rcond = core.rcond;
+  sol.theta3_offset = core.beta;
+  sol.min_gap = core.minGap;
+  for (const auto& n : core.notes) sol.notes.push_back(n);
+
+  const S accept = Tolerance<S>::sqrtEpsilon();
+  const S full = Tolerance<S>::identity(4096);
+  const S same = Tolerance<S>::precision(2);
+  std::vector<std::array<S, 6>> found;  // totals φ in the unit-scaled problem
+  std::vector<S> res;
+  int failed = 0, merged = 0;
+  auto addCandidate = [&](const std::array<S, 6>& phi0) {
+    std::array<S, 6> phi = polishGeneral6R(rn, Tn, phi0, options.polish_iterations);
+    for (auto& a : phi) a = detail6r::wrapAngle(a);
+    const S r = general6rResidual(rn, Tn, phi);
+    if (!(r <= accept)) return 1;
+    for (std::size_t k = 0; k < found.size(); ++k) {
+      S d = S(0);
+      for (int i = 0; i < 6; ++i) d = std::max<S>(d, abs(detail6r::wrapAngle(S(phi[i] - found[k][i]))));
+      if (d < same) {
+        if (r < res[k]) {
+          found[k] = phi;
+          res[k] = r;
+        }
+        return 2;
+      }
+    }
+    found.push_back(phi);
+    res.push_back(r);
+    return 0;
+  };
+  for (const auto& phi : core.phi) {
+    const int k = addCandidate(phi);
+    failed += k == 1;
+    merged += k == 2;
+  }
+  bool shortAnswer = core.suspicious || failed > 0 || merged > 0 || found.size() % 2 == 1;
+  if (failed > 0)
+    sol.notes.push_back(std::to_string(failed) + " real eigenvalue(s) did not polish to a posture");
+  if (merged > 0)
+    sol.notes.push_back(std::to_string(merged) + " real eigenvalue(s) polished onto another posture");
+  if (found.size() % 2 == 1) sol.notes.push_back("odd real count " + std::to_string(found.size()));
+
+  using Next = typename detail6r::NextScalar<S>::type;
+  if constexpr (!std::is_void_v<Next>) {
+    if (shortAnswer && options.escalate) {
+      Robot6R<Next> rh;
+      for (int i = 0; i < 6; ++i) rh[i] = rn[i].template cast<Next>();
+      const General6RSolution<Next> hi = solveGeneral6R<Next>(rh, Tn.template cast<Next>(), options);
+      sol.notes.push_back("re-solved in " + std::string(scalarName<Next>()) + ": " +
+                          std::to_string(hi.count()) + " real postures (" +
+                          std::to_string(found.size()) + " in " + std::string(scalarName<S>()) + ")");
+      for (const auto& n : hi.notes) sol.notes.push_back("  [" + std::string(scalarName<Next>()) + "] " + n);
+      sol.solved_in = hi.solved_in;
+      sol.complex_count = hi.complex_count;
+      const std::size_t before = found.size();
+      for (const auto& p : hi.postures) {
+        std::array<S, 6> phi;
+        for (int i = 0; i < 6; ++i) phi[i] = scalarCast<S>(p(i));
+        addCandidate(phi);
+      }
+      if (found.size() > before)
+        sol.notes.push_back(std::to_string(found.size() - before) + " posture(s) added by the re-solve");
+      shortAnswer = false;
+    }
+  }
+  if (shortAnswer && std::is_void_v<Next>)
+    sol.notes.push_back("no higher precision left: the answer above may be short");
+
+  for (std::size_t k = 0; k < found.size(); ++k) {
+    JointVector<S> q(6);
+    std::array<S, 6> qa;
+    for (int i = 0; i < 6; ++i) {
+      qa[i] = detail6r::wrapAngle(S(found[k][i] - robot[i].theta));
+      q(i) = qa[i];
+    }
+    const S r = general6rResidual(robot, target, qa);
+    if (r > full) sol.notes.push_back("posture " + std::to_string(k + 1) + " residual " +
+                                      toString(toDouble(r), 3) + " above 4096 ulps");
+    sol.postures.push_back(q);
+    sol.residuals.push_back(r);
+  }
+  sol.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return sol;
+}
+
+template <class S>
+General6RSolution<S> solveGeneral6R(const Robot6R<S>& robot, const Mat4<S>& target,
+                                    const General6ROptions& options) {
+  SE3<S> T;
+  try {
+    T = SE3<S>::fromMatrix(target);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(std::string("general 6R: target pose is not a rigid motion: ") + e.what());
+  }
+  return solveGeneral6R(robot, T, options);
+}
+
+}  // namespace soma
+
+#define SOMA_GENERAL6R_INSTANTIATE(S)                                                          \
+  template SE3<S> general6rForward<S>(const Robot6R<S>&, const std::array<S, 6>&);             \
+  template S general6rResidual<S>(const Robot6R<S>&, const SE3<S>&, const std::array<S, 6>&);  \
+  template General6RSolution<S> solveGeneral6R<S>(const Robot6R<S>&, const SE3<S>&,            \
+                                                  const General6ROptions&);                    \
+  template General6RSolution<S> solveGeneral6R<S>(const Robot6R<S>&, const Mat4<S>&,           \
+                                                  const General6ROptions&);                    \
+  template std::array<S, 6> polishGeneral6R<S>(const Robot6R<S>&, const SE3<S>&,              \
+                                               std::array<S, 6>, int);
+
+namespace soma::detail6r {
+
+/// The 12 residuals (R(q) − R*, row-major, and (t(q) − t*)/scale) and their 12×6 Jacobian
+/// (∂R/∂q_i = [z_i]× R, ∂t/∂q_i = z_i × (t − o_i)), for the numerical methods. GF §4.5
+template <class S>
+void poseResidual12(const Robot6R<S>& robot, const Mat3<S>& RT, const Vec3<S>& tT, const S& scale,
+                    const S* q, S* r, S* J /* 12×6 row-major or nullptr */) {
+  Mat3<S> R = Mat3<S>::Identity();
+  Vec3<S> t = Vec3<S>::Zero();
+  std::array<Vec3<S>, 6> z, o;
+  for (int i = 0; i < 6; ++i) {
+    z[i] = R.col(2);
+    o[i] = t;
+    const SE3<S> A = dhTransform(robot[i], q[i]);
+    t = t + R * A.translation();
+    R = R * A.rotation();
+  }
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) r[a * 3 + b] = R(a, b) - RT(a, b);
+  for (int a = 0; a < 3; ++a) r[9 + a] = (t(a) - tT(a)) / scale;
+  if (!J) return;
+  for (int i = 0; i < 6; ++i) {
+    Mat3<S> Z;
+    Z << S(0), -z[i].z(), z[i].y(), z[i].z(), S(0), -z[i].x(), -z[i].y(), z[i].x(), S(0);
+    const Mat3<S> dR = Z * R;
+    const Vec3<S> dt = z[i].cross(t - o[i]) / scale;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) J[(a * 3 + b) * 6 + i] = dR(a, b);
+    for (int a = 0; a < 3; ++a) J[(9 + a) * 6 + i] = dt(a);
+  }
+}
+
+/// Multi-start driver shared by the numerical methods: `local(q)` refines a start in place and
+/// returns false when it failed; converged points are polished by Newton and clustered.
+template <class Local>
+General6RSolution<double> multiStart6R(const Robot6R<double>& robot, const SE3<double>& target,
+                                       const General6RNumericOptions& opt, const char* method,
+                                       Local&& local) {
+  const auto start = std::chrono::steady_clock::now();
+  General6RSolution<double> sol;
+  sol.method = method;
+  sol.expected_count = 16;
+  sol.solved_in = "double";
+  std::mt19937_64 g(opt.seed);
+  std::uniform_real_distribution<double> u(-pi<double>(), pi<double>());
+  const double accept = Tolerance<double>::sqrtEpsilon();
+  const double same = Tolerance<double>::precision(2);
+  int converged = 0, duplicates = 0;
+  for (int s = 0; s < opt.starts; ++s) {
+    std::array<double, 6> q;
+    for (auto& x : q) x = u(g);
+    if (!local(q)) continue;
+    q = polishGeneral6R(robot, target, q, 12);
+    for (auto& x : q) x = wrapAngle(x);
+    const double r = general6rResidual(robot, target, q);
+    if (!(r <= accept)) continue;
+    ++converged;
+    bool dup = false;
+    for (const auto& p : sol.postures) {
+      double d = 0;
+      for (int i = 0; i < 6; ++i) d = std::max(d, std::abs(wrapAngle(q[i] - p(i))));
+      if (d < same) dup = true;
+    }
+    if (dup) {
+      ++duplicates;
+      continue;
+    }
+    JointVector<double> v(6);
+    for (int i = 0; i < 6; ++i) v(i) = q[i];
+    sol.postures.push_back(v);
+    sol.residuals.push_back(r);
+  }
+  sol.notes.push_back(std::to_string(opt.starts) + " starts, " + std::to_string(converged) +
+                      " converged, " + std::to_string(duplicates) +
+                      " duplicates clustered: a multi-start search cannot certify completeness");
+  sol.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return sol;
+}
+
+}  // namespace soma::detail6r
