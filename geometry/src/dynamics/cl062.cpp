@@ -35,8 +35,6 @@ static_assert(formSigns[0] != 0, "cl062: P_0 K_0 ∧ S_0 must have a nonzero shu
 ShuffleTerm shuffleByDefinition(Blade b, Blade c) {
   // SB's generator order as library indices.
   constexpr int sbOrder[8] = {a1, a2, a3, a, e1, e2, e3, e};
-  int pos[8] = {};
-  for (int k = 0; k < 8; ++k) pos[sbOrder[k]] = k;
   auto sbList = [&](Blade x) {
     std::vector<int> v;  // generators of x in SB's order (SB positions)
     for (int k = 0; k < 8; ++k)
@@ -48,7 +46,7 @@ ShuffleTerm shuffleByDefinition(Blade b, Blade c) {
     for (std::size_t i = 0; i < seq.size(); ++i)
       for (std::size_t j = i + 1; j < seq.size(); ++j)
         if (seq[i] > seq[j]) ++inv;
-      return (inv & 1) ? -1 : 1;
+    return (inv & 1) ? -1 : 1;
   };
   // library blade = (sign) · (product of its generators in SB's order)
   auto libToSb = [&](Blade x) {
