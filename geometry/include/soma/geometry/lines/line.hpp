@@ -193,7 +193,7 @@ template <class S> class Line {
   /// The line moved by g: Ad(g) s (= line through R q + t with direction R ω).
   // GF §6.4, GF-6.4-adjoint-on-lines (T x = t × x, convention A, E6.1)
   Line transformed(const SE3<S>& g) const {
-    const Mat3<S> r = g.rotation().matrix();
+    const Mat3<S> r = g.rotation();
     const Vec3<S> w = r * w_;
     return Line(w, Vec3<S>(r * v_ + g.translation().cross(w)), Unchecked{});
   }
