@@ -103,7 +103,18 @@ template <class S> std::vector<S> realRoots(const std::vector<S>& c0) {
   if (c.size() <= 1) return out;
   for (const auto& z : polynomialRoots(c)) {
     const S scale = std::max<S>(S(1), abs(z.real()));
-    if (abs(z.imag()) <= Tolerance<S>::input() * scale) out.push_back(polish(c, z.real()));
+    if (abs(z.imag()) > Tolerance<S>::input() * scale) continue;
+    // A candidate is real when, polished, it is a root to round-off: |p(x)| ≤ 256 eps Σ|c_k x^k|.
+    // (A double root splits into x ± i√eps under round-off and passes; a genuine complex pair
+    // x ± iy with y ~ √eps leaves |p(x)| ~ y² |p''|/2 and is rejected. In float the imaginary
+    // pre-filter alone let pairs with y ~ 0.02 through.)
+    const S x = polish(c, z.real());
+    S mag = S(0), xk = S(1);
+    for (const auto& ck : c) {
+      mag += abs(ck) * xk;
+      xk *= abs(x);
+    }
+    if (abs(evalPolynomial(c, x)) <= Tolerance<S>::identity(256) * mag) out.push_back(x);
   }
   std::sort(out.begin(), out.end());
   return out;
