@@ -3,10 +3,21 @@
 //
 // `Multivector<Sig, S, M>` stores one coefficient per basis blade whose grade is in the
 // compile-time grade mask M (bit k ⇔ grade k). `Dense<Sig,S>` keeps all 2^n; a `Bivector`,
-// `Vector` or `Even` (rotors, motors) keeps only its grades. A product of two multivectors is
-// computed from a compile-time table of the (i, j, k, sign) terms whose sign is nonzero, and its
-// result type keeps exactly the grades that can be nonzero (degenerate generators included), so
-// a motor times a motor in Cl(0,3,1) runs 64 multiply-adds and returns an `Even`.
+// `Vector` or `Even` (rotors, motors) keeps only its grades. The result type of a product keeps
+// exactly the grades that can be nonzero (degenerate generators included). Three kernels:
+//  * small products (|A|·|B| ≤ 1024 coefficient pairs, e.g. everything in Cl(0,3,1)): a
+//    compile-time table of the (i, j, k, sign) terms with nonzero sign, unrolled to straight-line
+//    code for built-in floating types when it has ≤ 256 terms — a motor times a motor in
+//    Cl(0,3,1) is 48 multiplies and adds, no loads of a table, no branches (≈ a hand-written
+//    dual-quaternion product, bench/clifford.cpp);
+//  * large geometric products (n ≥ 5, built-in floating types): the blocked kernel
+//    detail::Blocked — blades split into low/high generator bits, the sign factorised, whole
+//    blocks vanishing on shared null generators skipped, one signed permuted copy of b, then
+//    width-8 axpys into a register block of the result (Cl(0,6,2) Even × Even 128×128 ≈ 2.5 µs,
+//    Dense × Dense ≈ 8 µs in double, x86-64 baseline SSE2);
+//  * everything else (other large products, mpfr): a term table built once at run time.
+// All three sum each coefficient's terms in the same order, so sparse and dense operands give
+// bitwise-equal results.
 //
 // Operator map (one place, used throughout soma):
 //   a * b   geometric product                        geometric(a, b)
@@ -212,15 +223,22 @@ const auto& ProductTable<Sig, op, A, B>::terms() {
 /// compiler emits one multiply and one add (or a move) per term, no loads of the table and no
 /// branches. Used for tables of at most kUnrollTerms terms and built-in floating types.
 inline constexpr int kUnrollTerms = 256;
+/// The operands are copied to local arrays and the result accumulated in one: locals that never
+/// escape stay in registers, whereas the inputs (possibly aliasing the result object as far as
+/// the compiler knows) would otherwise be reloaded and the result stored after every term.
 template <class TT, class Out, class XA, class XB, std::size_t... I>
 inline void applyUnrolled(Out& out, const XA& a, const XB& b, std::index_sequence<I...>) {
   constexpr auto& t = TT::table;
   constexpr auto& f = TT::first;
-  (((f[I] ? (t[I].s > 0 ? void(out[t[I].k] = a[t[I].i] * b[t[I].j])
-                        : void(out[t[I].k] = -(a[t[I].i] * b[t[I].j])))
-          : (t[I].s > 0 ? void(out[t[I].k] += a[t[I].i] * b[t[I].j])
-                        : void(out[t[I].k] -= a[t[I].i] * b[t[I].j])))),
+  const auto av = a.coeffs();
+  const auto bv = b.coeffs();
+  std::array<typename Out::Scalar, std::size_t(Out::size)> acc{};
+  (((f[I] ? (t[I].s > 0 ? void(acc[t[I].k] = av[t[I].i] * bv[t[I].j])
+                        : void(acc[t[I].k] = -(av[t[I].i] * bv[t[I].j])))
+          : (t[I].s > 0 ? void(acc[t[I].k] += av[t[I].i] * bv[t[I].j])
+                        : void(acc[t[I].k] -= av[t[I].i] * bv[t[I].j])))),
    ...);
+  for (int k = 0; k < Out::size; ++k) out[k] = acc[std::size_t(k)];
 }
 
 /// Blocked geometric product for large algebras (n ≥ 5, built-in floating types).
