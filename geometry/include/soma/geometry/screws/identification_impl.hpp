@@ -48,9 +48,17 @@ template <class S> Vec3<S> perpendicularTo(const Vec3<S>& u) {
   a(k) = S(1);
   return unitOf<S>(Vec3<S>(u.cross(a)));
 }
+/// Unit vector along the part of x orthogonal to the unit u (two Gram–Schmidt passes: x may be
+/// nearly parallel to u near a type boundary).
+template <class S> Vec3<S> orthoUnit(const Vec3<S>& x, const Vec3<S>& u) {
+  Vec3<S> y = x - u * u.dot(x);
+  y -= u * u.dot(y);
+  return unitOf<S>(y);
+}
 template <class S> Mat3<S> frameOf(const Vec3<S>& e1, const Vec3<S>& e2) {
+  const Vec3<S> f2 = orthoUnit<S>(e2, e1);
   Mat3<S> r;
-  r << e1, e2, e1.cross(e2);
+  r << e1, f2, e1.cross(f2);
   return r;
 }
 
@@ -156,7 +164,7 @@ template <class S> ScrewIdRaw<S> classifyLow(const ScrewBasis<S>& B, ScrewDecide
         out.d = u[0].cross(v[0]);
       } else {
         out.type = T::IBp_2;
-        const Vec3<S> e2 = unitOf<S>(Vec3<S>(tt - ct * u[0]));
+        const Vec3<S> e2 = orthoUnit<S>(tt, u[0]);
         out.R = frameOf<S>(u[0], e2);
         out.p[0] = tt.dot(e2) / ct;
         const S mu = -v[0].dot(u[0]) / ct;
@@ -193,7 +201,7 @@ template <class S> ScrewIdRaw<S> classifyLow(const ScrewBasis<S>& B, ScrewDecide
         pitchType(u[0].dot(v[0]), T::IIC0_3, T::IICp_3);
         out.R = frameOf<S>(u[0], unitOf<S>(Vec3<S>(t[0] - t[0].dot(u[0]) * u[0])));
       } else {
-        Vec3<S> e2 = unitOf<S>(Vec3<S>(m.cross(u[0])));
+        Vec3<S> e2 = orthoUnit<S>(Vec3<S>(m.cross(u[0])), u[0]);
         Vec3<S> e3 = u[0].cross(e2);
         if (dec.nonzero("|ω·m| (sine of the angle between ω and T)", abs(um), tolR)) {
           out.type = T::ICp_3;
@@ -232,7 +240,7 @@ template <class S> ScrewIdRaw<S> classifyLow(const ScrewBasis<S>& B, ScrewDecide
         out.d = dz * e1.cross(e2);
       } else {
         out.type = T::IB0_3;
-        const Vec3<S> e1 = tW / ntW;
+        const Vec3<S> e1 = orthoUnit<S>(tW, k);
         const Vec3<S> e3 = tk < S(0) ? Vec3<S>(-k) : k;
         const Vec3<S> e2 = e3.cross(e1);
         out.R << e1, e2, e3;

@@ -143,8 +143,15 @@ template <class S> ScrewSystem<S> completion(const ScrewSystem<S>& d, std::vecto
     ScrewMatX<S> g(6, nc + n1 * nc);
     g.leftCols(nc) = cur.basis();
     int k = nc;
+    // Brackets of unit basis screws: keep only the part outside Δ_i that is above the rank
+    // tolerance (an exactly-zero bracket computed in floating point must not be normalised up).
     for (int i = 0; i < n1; ++i)
-      for (int j = 0; j < nc; ++j) g.col(k++) = screwBracket<S>(d.basis().col(i), cur.basis().col(j));
+      for (int j = 0; j < nc; ++j) {
+        const Vec6<S> b = screwBracket<S>(d.basis().col(i), cur.basis().col(j));
+        const Vec6<S> r = b - cur.basis() * (cur.basis().transpose() * b);
+        if (r.squaredNorm() > Tolerance<S>::rank() * Tolerance<S>::rank()) g.col(k++) = r;
+      }
+    g.conservativeResize(6, k);
     ScrewSystem<S> next(g);
     if (next.dimension() == cur.dimension()) break;
     cur = next;
