@@ -75,11 +75,11 @@ void fig61(Context& c) {
   addLabel(s, q1, "q₁", {10, 10}, rd::HAlign::Left, 26);
   addLabel(s, q2, "q₂", {10, -8}, rd::HAlign::Left, 26);
   addLabel(s, V3((q1 + q2) / 2), "ω = q₂ − q₁", {14, 4}, rd::HAlign::Left, 24, rd::palette::vermillion);
-  addLabel(s, V3(v.normalized()), "v = q₁ × ω (⟂ the plane of O and the line; drawn unit length)", {8, -8}, rd::HAlign::Left, 22,
+  addLabel(s, V3(v.normalized()), "v = q₁ × ω (normal to the plane of O and the line; unit length)", {8, -8}, rd::HAlign::Left, 22,
            rd::palette::bluishGreen);
   addLabel(s, f, "foot ω × v/|ω|²", {-10, 12}, rd::HAlign::Right, 22);
   addLabel(s, V3::Zero(), "O", {-10, 10}, rd::HAlign::Right, 24);
-  draw(c, s, V3(-1.0, -0.35, -0.45), "GF-6.1-fig6.1-line.png",
+  draw(c, s, V3(-0.35, -1.0, -0.3), "GF-6.1-fig6.1-line.png",
          "A line in three dimensions (Fig. 6.1) through q₁ = (1.6, −0.4, 0.6) and q₂ = (0.4, 1.4, 1.5): direction ω = q₂ − q₁ "
          "(vermillion), moment v = q₁ × ω (green, normalised; perpendicular to the plane through O and the line), and the "
          "foot of the perpendicular from O (dashed).");
@@ -158,7 +158,7 @@ void fig63(Context& c) {
   c.checkNear("nodal segment: z from the centre spans h₁ − h₂ = l/sin φ", l / std::sin(phi), cy.pitchMax() - cy.pitchMin(), tolId());
   if (!c.makeFigures()) return;
   rd::Scene s;
-  s.title = "Fig. 6.3: the cylindroid of the lines s₁ (z = 0, along x) and s₂ (z = l, at φ = 60°), coloured by pitch";
+  s.title = "Fig. 6.3: the cylindroid of s₁ and s₂ (l = 1, φ = 60°), axes coloured by pitch";
   const double R = 1.6;
   const double hmin = cy.pitchMin(), hmax = cy.pitchMax();
   // Surface: ρ ∈ [−R, R] along each axis direction, θ ∈ [0, π).
@@ -207,7 +207,7 @@ void fig63(Context& c) {
   addLabel(s, V3(zc - 1.2 * ez), "pitch: dark blue h₂ = " + num(hmin) + " … yellow h₁ = " + num(hmax), {0, 28}, rd::HAlign::Center, 22);
   draw(c, s, V3(-1.0, -0.8, -0.42), "GF-6.5.2-fig6.3-cylindroid.png",
          "The cylindroid (Plücker's conoid, Fig. 6.3) of the pencil of s₁ = x-axis and s₂ (height l = 1, angle φ = 60°): 24 axes "
-         "coloured by pitch (viridis, h₂ = −0.577 … h₁ = 1.732 per radian), the translucent surface z(x² + y²) = l(y² + xy cot φ) "
+         "coloured by pitch (viridis, h₂ = −0.289 … h₁ = 0.866 per radian), the translucent surface z(x² + y²) = l(y² + xy cot φ) "
          "(corrected sign, E6.3) inside a cylinder of radius 1.6, the two generators (vermillion) and the nodal line (dashed).");
 }
 
@@ -245,7 +245,7 @@ void curvaturePanel(rd::Scene& s, double kx, double ky, const V3& offset, double
     addTube(s, V3(offset + f - len * d), V3(offset + f + len * d), rd::colorMap(double(i) / na), 0.012);
   }
   s.add(rd::Points{{offset}, rd::palette::vermillion, 0.04});
-  addLabel(s, V3(offset + V3(0, 0, -0.6)), label, {0, 30}, rd::HAlign::Center, 24);
+  addLabel(s, V3(offset + V3(0, 0, 2.9)), label, {0, -10}, rd::HAlign::Center, 24);
 }
 void fig64(Context& c) {
   // The axis in direction φ is at height 1/k_φ: check both panels' extremes.
@@ -282,7 +282,7 @@ void fig65(Context& c) {
   c.checkResidual("drawn configuration: W J = I", (w * j - Mat6<double>::Identity()).norm(), 1e-12);
   if (!c.makeFigures()) return;
   rd::Scene s;
-  s.title = "Fig. 6.5: joint axes of the PUMA-like 6R arm (1, 2 through O; 3 ∥ 2 through x_e; 4, 5, 6 through x_c)";
+  s.title = "Fig. 6.5: joint axes of the PUMA-like 6R arm";
   const double len = 0.75;
   const V3 pts[6] = {V3::Zero(), V3::Zero(), a.xe, a.xc, a.xc, a.xc};
   for (int i = 0; i < 6; ++i) {
@@ -359,7 +359,7 @@ void complexFigure(Context& c) {
     s.add(disc);
     s.add(rd::Points{{y}, col, 0.035});
   }
-  addLabel(s, pts.back(), "on the axis: the null plane is ⟂ the axis", {10, 14});
+  addLabel(s, pts.back(), "on the axis: null plane normal to the axis", {60, 14});
   draw(c, s, V3(-1.0, -0.6, -0.5), "GF-6.6-linear-complex-pencils.png",
          "The lines of the linear complex with axis z and pitch h = 0.35 through eight points: at each point the complex lines "
          "form a plane pencil in the null plane (disc), which turns about the radius by atan(ρ/h) as the distance ρ from the "

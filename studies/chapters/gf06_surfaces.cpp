@@ -71,9 +71,9 @@ void conicToQuadric(Context& c) {
   double plane = 0;
   for (int k = 0; k < 12; ++k) {
     const V6 s = z.generator(0.5 * k).normalized().coords() * std::sqrt(2.0);
-    plane = std::max(plane, std::abs(s(0) - s(3)) + std::abs(s(1) - s(4)) + std::abs(s(2) + s(5)));
+    plane = std::max(plane, std::abs(s(0) + s(3)) + std::abs(s(1) + s(4)) + std::abs(s(2) - s(5)));
   }
-  c.checkResidual("the unit-axis sweep of (1,0,0)+μ(0,1,1) is the book's family 1 (its 2-plane)", plane, tolId(256));
+  c.checkResidual("the sweep of (1,0,0) + μ(0,1,1) about z is the book's family 2 (its 2-plane p01 = −p23, …)", plane, tolId(256));
 }
 
 // GF §6.5.2, GF-6.5.2-cylindroid-two-lines (E6.3)

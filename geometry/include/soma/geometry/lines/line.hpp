@@ -201,10 +201,16 @@ template <class S> class Line {
   /// Same line (any nonzero scale, including negative: rank [s_a s_b] = 1), to tolerance tol
   /// relative to |s_a||s_b|. GF §6.1, GF-6.1-same-line
   bool sameAs(const Line& o, const S& tol = Tolerance<S>::identity()) const {
-    // |s_a ∧ s_b|² = |s_a|²|s_b|² − (s_a·s_b)².
+    // |s_a ∧ s_b|² = Σ_{i<j} (a_i b_j − a_j b_i)², summed term by term: the Gram form
+    // |a|²|b|² − (a·b)² cancels catastrophically (rounding ε|a|²|b|² ≫ tol²|a|²|b|²).
     const Vec6<S> a = coords(), b = o.coords();
-    const S aa = a.squaredNorm(), bb = b.squaredNorm(), ab = a.dot(b);
-    return aa * bb - ab * ab <= tol * tol * aa * bb;
+    S w2(0);
+    for (int i = 0; i < 6; ++i)
+      for (int j = i + 1; j < 6; ++j) {
+        const S t = a(i) * b(j) - a(j) * b(i);
+        w2 += t * t;
+      }
+    return w2 <= tol * tol * a.squaredNorm() * b.squaredNorm();
   }
 
   template <class T> Line<T> cast() const {

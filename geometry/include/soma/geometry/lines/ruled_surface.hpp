@@ -60,8 +60,10 @@ template <class S> Line<S> commonPerpendicularDual(const Line<S>& a, const Line<
   if (c0sq <= Tolerance<S>::epsilon())
     throw InvalidInput("commonPerpendicularDual: the lines are parallel (no unique common perpendicular)");
   const S c0 = sqrt(c0sq), c1 = c.re.dot(c.du) / c0;
-  // (c.re + ε c.du)/(c0 + ε c1) = c.re/c0 + ε (c.du c0 − c.re c1)/c0².
-  return Line<S>(Vec3<S>(c.re / c0), Vec3<S>((c.du * c0 - c.re * c1) / c0sq));
+  // (c.re + ε c.du)/(c0 + ε c1) = c.re/c0 + ε (c.du c0 − c.re c1)/c0²; built through its foot
+  // u × m so that a perpendicular passing near the origin stays exactly a line.
+  const Vec3<S> u = c.re / c0, m = (c.du * c0 - c.re * c1) / c0sq;
+  return Line<S>::pointDirection(Vec3<S>(u.cross(m)), u);
 }
 
 // ---- ruled surfaces ---------------------------------------------------------------------------
@@ -181,8 +183,9 @@ template <class S> RuledFrame<S> RuledSurface<S>::frame(const S& lambda) const {
   const LineRelation<S> rel = relation(l, ax.axis);
   // Orient ň along u' (the axis from screwAxis already has direction u'/|u'|).
   const Line<S> n = Line<S>::pointDirection(rel.footA, ax.axis.direction());
-  const DualVec3<S> t = DualVec3<S>::of(l).cross(DualVec3<S>::of(n));
-  RuledFrame<S> f{l, n, Line<S>(t.re, t.du), ax.amplitude, ax.amplitude * ax.pitch, rel.footA, ax.pitch};
+  // ť = ľ × ň: the line through the striction point along u × n.
+  const Line<S> t = Line<S>::pointDirection(rel.footA, Vec3<S>(l.direction().cross(n.direction())));
+  RuledFrame<S> f{l, n, t, ax.amplitude, ax.amplitude * ax.pitch, rel.footA, ax.pitch};
   return f;
 }
 

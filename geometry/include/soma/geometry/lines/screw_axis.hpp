@@ -41,10 +41,11 @@ template <class S> ScrewAxis<S> screwAxis(const Vec6<S>& s) {
     return {Line<S>::atInfinity(v), std::numeric_limits<S>::infinity(), sqrt(v.squaredNorm()), true};
   }
   const S h = w.dot(v) / ww, n = sqrt(ww);
-  const Vec3<S> m = v - h * w;  // moment of the axis, m·ω = 0 up to rounding
-  // Remove the rounding component along ω so the unit axis is exactly on the quadric's scale.
-  const Vec3<S> mPerp = m - (m.dot(w) / ww) * w;
-  return {Line<S>(Vec3<S>(w / n), Vec3<S>(mPerp / n)), h, n, false};
+  // The axis through its foot q = ω × v/|ω|² (convention A): q × u is perpendicular to u up to
+  // rounding relative to |q|, even when the axis passes within rounding of the origin (the
+  // moment v − hω would be pure rounding noise along ω there).
+  const Vec3<S> q = w.cross(v) / ww;
+  return {Line<S>::pointDirection(q, Vec3<S>(w / n)), h, n, false};
 }
 
 /// The screw of amplitude a about a finite axis with pitch h: a·(u; m + h u), (u; m) the unit axis.
