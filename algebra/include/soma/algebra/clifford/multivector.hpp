@@ -230,8 +230,8 @@ template <class TT, class Out, class XA, class XB, std::size_t... I>
 inline void applyUnrolled(Out& out, const XA& a, const XB& b, std::index_sequence<I...>) {
   constexpr auto& t = TT::table;
   constexpr auto& f = TT::first;
-  const auto av = a.coeffs();
-  const auto bv = b.coeffs();
+  [[maybe_unused]] const auto av = a.coeffs();  // unused when the table is empty (e ∧ e = 0)
+  [[maybe_unused]] const auto bv = b.coeffs();
   std::array<typename Out::Scalar, std::size_t(Out::size)> acc{};
   (((f[I] ? (t[I].s > 0 ? void(acc[t[I].k] = av[t[I].i] * bv[t[I].j])
                         : void(acc[t[I].k] = -(av[t[I].i] * bv[t[I].j])))
