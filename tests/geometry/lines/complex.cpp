@@ -83,9 +83,9 @@ TEMPLATE_TEST_CASE("Linear complex: equation, axis, pitch, 4×4 matrix, null pol
     for (const S& th : {S(0), S(1), S(2)}) REQUIRE(c.contains(c.lineThrough(y, th), tol<S>(4096)));
     const Vec4<S> yh = c.nullPoint(c.nullPlane(y));
     REQUIRE((yh.template tail<3>() / yh(0) - y).norm() <= tol<S>(1 << 16));
-    // The axis: a line along α; it is a complex line only for pitch 0 (⟨s, axis⟩ = 2h|α|).
+    // The axis: a line along α; it is a complex line only for pitch 0 (⟨s, axis⟩ = h|α|).
     REQUIRE(kleinDefect(c.axis().coords()) <= tol<S>(1024));
-    REQUIRE(abs(reciprocalProduct(s, c.axis().coords()) - S(2) * c.pitch() * c.alpha().norm()) <= tol<S>(4096));
+    REQUIRE(abs(reciprocalProduct(s, c.axis().coords()) - c.pitch() * c.alpha().norm()) <= tol<S>(4096));
     // Rigid symmetries fix the screw and map complex lines to complex lines (E6.1 form of t).
     const SE3<S> sym = c.symmetry(uniform<S>(g, -3, 3), uniform<S>(g));
     REQUIRE((lineAction(sym) * s - s).norm() <= tol<S>(4096) * S(4));
