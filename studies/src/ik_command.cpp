@@ -2,6 +2,7 @@
 
 #include "soma/algebra/errors.hpp"
 #include "soma/geometry/serial/closed_form_ik.hpp"
+#include "soma/geometry/serial/general_6r.hpp"
 #include "soma/studies/pose_file.hpp"
 #include "soma/studies/robot_file.hpp"
 
@@ -16,7 +17,29 @@ int ikImpl(const std::filesystem::path& file, const std::filesystem::path& poseF
            bool json, std::ostream& out) {
   const RobotFile<S> rf = readRobot<S>(file);
   const SE3<S> target = readPose<S>(poseFile);
-  const Solution<S> sol = solveClosedForm<S>(rf.robot, target, method);
+  if (method == IkMethod::Auto) method = classifyRobot(rf.robot);
+  Solution<S> sol;
+  if (method == IkMethod::General6R) {
+    // The general 6R solver (geometry/serial/general_6r.hpp) takes six standard DH rows and the
+    // pose of frame 6 in frame 0: strip the file's base and tool.
+    if (rf.robot.convention() != DHConvention::Standard || rf.robot.dof() != 6)
+      throw InvalidInput("ik method general6r: needs a 6-joint robot in standard DH (\"convention\": \"dh\")");
+    // Only the double instantiation of the general 6R solver is built so far (its other rungs
+    // are still .wip in geometry/src/serial): other scalars are refused, not silently changed.
+    if constexpr (std::is_same_v<S, double>) {
+      Robot6R<S> rows;
+      for (int i = 0; i < 6; ++i) rows[i] = rf.robot.dhRows()[i];
+      const SE3<S> flange = rf.robot.base().inverse() * target * rf.robot.tool().inverse();
+      General6RSolution<S> g = solveGeneral6R<S>(rows, flange);
+      sol = static_cast<Solution<S>&>(g);
+      sol.notes.push_back("complex solutions of the eigenproblem: " + std::to_string(g.complex_count) +
+                          ", solved in " + g.solved_in);
+    } else {
+      throw InvalidInput("ik method general6r: available in --scalar double only (so far)");
+    }
+  } else {
+    sol = solveClosedForm<S>(rf.robot, target, method);
+  }
   const double unit = rf.degrees ? 180.0 / pi<double>() : 1.0;
   auto jointValue = [&](const JointVector<S>& q, int i) {
     return toDouble(q(i)) * (rf.robot.joints()[i].type == JointType::Revolute ? unit : 1.0);
