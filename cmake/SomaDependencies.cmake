@@ -18,3 +18,7 @@ if(SOMA_BUILD_BENCH)
   find_package(benchmark REQUIRED)
   find_package(orocos_kdl QUIET)
 endif()
+# General-6R numerical alternatives (geometry/src/serial/general_6r_{ceres,nlopt}.cpp). NLopt's
+# C++ build is the nlopt_cxx config (a plain find_package(NLopt) picks the C build: DESIGN §9).
+find_package(Ceres REQUIRED)
+find_package(NLopt CONFIG REQUIRED HINTS /usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake/nlopt_cxx)
