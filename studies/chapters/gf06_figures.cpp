@@ -75,7 +75,7 @@ void fig61(Context& c) {
   addLabel(s, q1, "q₁", {10, 10}, rd::HAlign::Left, 26);
   addLabel(s, q2, "q₂", {10, -8}, rd::HAlign::Left, 26);
   addLabel(s, V3((q1 + q2) / 2), "ω = q₂ − q₁", {14, 4}, rd::HAlign::Left, 24, rd::palette::vermillion);
-  addLabel(s, V3(v.normalized()), "v = q₁ × ω (normal to the plane of O and the line; unit length)", {8, -8}, rd::HAlign::Left, 22,
+  addLabel(s, V3(v.normalized()), "v = q₁ × ω (unit length)", {14, 4}, rd::HAlign::Left, 22,
            rd::palette::bluishGreen);
   addLabel(s, f, "foot ω × v/|ω|²", {-10, 12}, rd::HAlign::Right, 22);
   addLabel(s, V3::Zero(), "O", {-10, 10}, rd::HAlign::Right, 24);

@@ -227,7 +227,8 @@ void cylindroidInvariants(Context& c) {
     fd = std::max(fd, ((rs.coords(th + h) - rs.coords(th - h)) / (2 * h) - rs.derivative(th)).norm());
     // Same surface as GF-6.5.2-cylindroid-principal-form with r_x = r, r_y = −r.
     const Cylindroid<double> cy(six(V3(1, 0, 0), V3(0, r, 0)), six(V3(0, 1, 0), V3(r, 0, 0)));
-    same = std::max(same, cy.axis(th).sameAs(rs.generator(th)) ? 0.0 : 1.0);
+    // Cylindroid angles are measured from its principal screw (here at 45°): use angleOf.
+    same = std::max(same, cy.axis(cy.angleOf(rs.coords(th))).sameAs(rs.generator(th), tolId(1024)) ? 0.0 : 1.0);
   }
   c.checkResidual("moment = s × v with s = (0, 0, r cos 2θ) (convention A)", moment, tolId(64));
   c.checkResidual("printed dľ/dθ (finite differences, h = 1e-6)", fd, 1e-8);
