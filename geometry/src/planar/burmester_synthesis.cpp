@@ -251,8 +251,11 @@ std::vector<BurmesterPair<S>> BurmesterSynthesis<S>::burmesterPairs(int* complex
   for (const auto& ij : {std::pair<int, int>{1, 2}, {1, 3}, {2, 3}}) {
     const Vec2<S> P = norm.pole(ij.first, ij.second);
     Poly1<S> rem;
-    S rn(0);
-    for (const S& v : R) rn = std::max<S>(rn, abs(v));
+    S rn(0), pw(1);  // the remainder is R(P_x): judge it against Σ|r_k||P_x|^k
+    for (const S& v : R) {
+      rn += abs(v) * pw;
+      pw *= abs(P(0));
+    }
     R = polyDiv(R, Poly1<S>{-P(0), S(1)}, &rem);
     pd = std::max<S>(pd, abs(rem.empty() ? S(0) : rem[0]) / rn);
   }
