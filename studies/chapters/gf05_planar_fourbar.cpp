@@ -196,11 +196,17 @@ void couplerCurves(Context& c) {
                   std::abs(sextic.at(4, 2) - 3 * sextic.at(6, 0)) + std::abs(sextic.at(2, 4) - 3 * sextic.at(6, 0)) +
                       std::abs(sextic.at(0, 6) - sextic.at(6, 0)),
                   tol(256) * std::abs(sextic.at(6, 0)));
-  // sweep the crank: inflections of the coupler curve (sampled) lie on the inflection circle of that instant
+  // sweep the crank: inflections of the coupler curve (sampled) lie on the inflection circle of that
+  // instant. The traced point is one of the inflection circle at θ₁ = 1 (so it has inflections).
+  const V2 pcInf = [&] {
+    const InstantInvariants<double> i1 = InstantInvariants<double>::fromJet(fb.couplerJet(1.0, 1, {1.0, 1, 0, 0, 0}));
+    const Circle<double> c1 = i1.inflectionCircle();
+    return V2(fb.solve(1.0, 1)->coupler.inverse().act(V2(c1.centre + c1.radius * V2(std::cos(0.77), std::sin(0.77)))));
+  }();
   const int N = 3600;
   std::vector<double> kap(N);
   std::vector<FourBarPose<double>> poses = fb.traceCircuit(0, N);
-  for (int k = 0; k < N; ++k) kap[k] = fdCurvature(fb, poses[k].theta1, poses[k].mode, pc, 1e-4);
+  for (int k = 0; k < N; ++k) kap[k] = fdCurvature(fb, poses[k].theta1, poses[k].mode, pcInf, 1e-4);
   double worstInf = 0;
   int inflections = 0;
   for (int k = 0; k < N; ++k) {
@@ -211,7 +217,7 @@ void couplerCurves(Context& c) {
     if (b < a) b += 2 * 3.14159265358979323846;
     double fa = kap[k];
     for (int it = 0; it < 40; ++it) {
-      const double m = 0.5 * (a + b), fm = fdCurvature(fb, m, 1, pc, 1e-4);
+      const double m = 0.5 * (a + b), fm = fdCurvature(fb, m, 1, pcInf, 1e-4);
       if (fa * fm <= 0) b = m;
       else {
         a = m;
@@ -221,13 +227,13 @@ void couplerCurves(Context& c) {
     const double th = 0.5 * (a + b);
     const InstantInvariants<double> inv = InstantInvariants<double>::fromJet(fb.couplerJet(th, 1, {th, 1, 0, 0, 0}));
     const Circle<double> ci = inv.inflectionCircle();
-    const V2 q = fb.solve(th, 1)->coupler.act(pc);
+    const V2 q = fb.solve(th, 1)->coupler.act(pcInf);
     worstInf = std::max(worstInf, std::abs((q - ci.centre).norm() - ci.radius) / ci.radius);
     ++inflections;
   }
   c.checkEqual("inflections of the coupler curve found by sampling (even, > 0)", 1, (inflections > 0 && inflections % 2 == 0) ? 1 : 0);
   c.checkResidual("each inflection lies on the inflection circle of its instant (relative)", worstInf, 1e-6);
-  c.note("The coupler curve of P = (0.8, 1.1) (coupler frame) has " + std::to_string(inflections) +
+  c.note("The coupler curve of a point of the inflection circle at θ₁ = 1 has " + std::to_string(inflections) +
          " inflections on circuit 0; at each, P is on that instant's inflection circle.");
   // change-point extreme: the figure-eight circuit passes the node smoothly
   const FourBar<double> cp(V2(0, 0), V2(3, 0), 1, 2.5, 1.5, pc);
