@@ -40,7 +40,9 @@ FourBar<S>::FourBar(const Vec2<S>& c1, const Vec2<S>& c4, const S& crank, const 
     throw InvalidInput("4-bar: the ground pivots c1 and c4 coincide");
   gamma_ = atan2(c4(1) - c1(1), c4(0) - c1(0));
   const Range r = range();
-  if (r.A > r.B)
+  const S kLo = (l0_ * l0_ + l1_ * l1_ - (l2_ + l3_) * (l2_ + l3_)) / (S(2) * l0_ * l1_);
+  const S kHi = (l0_ * l0_ + l1_ * l1_ - (l2_ - l3_) * (l2_ - l3_)) / (S(2) * l0_ * l1_);
+  if (r.A > r.B || kLo > S(1) + Tolerance<S>::rank() || kHi < S(-1) - Tolerance<S>::rank())
     throw InvalidInput("4-bar: cannot be assembled at any crank angle (ground " + toString(l0_) + ", crank " +
                        toString(l1_) + ", coupler " + toString(l2_) + ", rocker " + toString(l3_) +
                        "): the longest link exceeds the sum of the other three");
