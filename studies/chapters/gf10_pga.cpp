@@ -21,7 +21,7 @@ namespace {
 using namespace soma::pga;
 using S = double;
 using V3 = Vec3<S>;
-constexpr const char* kChapter = "GF 10 — Points, lines and planes (Cl(0,3,1))";
+constexpr const char* kChapter = "GF 10 — Points, lines, planes; Pieper robots";
 
 std::mt19937_64 rng(std::uint64_t seed) { return std::mt19937_64(seed); }
 double uni(std::mt19937_64& g, double lo = -1, double hi = 1) {

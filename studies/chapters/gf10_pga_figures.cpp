@@ -14,7 +14,7 @@ namespace {
 using namespace soma::pga;
 namespace rd = soma::render;
 using V3 = Eigen::Vector3d;
-constexpr const char* kChapter = "GF 10 — Points, lines and planes (Cl(0,3,1))";
+constexpr const char* kChapter = "GF 10 — Points, lines, planes; Pieper robots";
 
 // GF §10.1.1, GF-10.1.1-fig10.1-plane (with erratum E10.10).
 void planeFigure(Context& c) {
