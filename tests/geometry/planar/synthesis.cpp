@@ -107,17 +107,19 @@ TEST_CASE("five positions from random 4-bars: the Burmester pairs contain the or
   auto& g = rng(603);
   const int trials = 200;
   int success = 0, recovered = 0;
-  double worstT = 0, worstA = 0, worstResidual = 0;
+  double worstT = 0, worstA = 0, worstResidual = 0, worstComplex = 0, worstAlgebraic = 0;
   int countHist[5] = {0, 0, 0, 0, 0};
   for (int t = 0; t < trials; ++t) {
     const Trial tr = randomTrial(g);
     const BurmesterSynthesis<double> bs(tr.positions);
     int complexCount = -1;
-    double lead = 0, poleDef = 0;
-    const auto pairs = bs.burmesterPairs(&complexCount, &lead, &poleDef);
+    double complexRes = 1, algebraicRes = 1;
+    const auto pairs = bs.burmesterPairs(&complexCount, &complexRes, &algebraicRes);
     CHECK(int(pairs.size()) + complexCount == 4);
-    CHECK(lead <= 1e-8);
-    CHECK(poleDef <= 1e-8);
+    CHECK(complexRes <= 1e-12);   // the non-real solutions are genuine solutions
+    CHECK(algebraicRes <= 1e-8);  // the conic intersection alone, before any Newton step
+    worstComplex = std::max(worstComplex, complexRes);
+    worstAlgebraic = std::max(worstAlgebraic, algebraicRes);
     ++countHist[pairs.size()];
     int ia = -1, ib = -1;
     for (int k = 0; k < int(pairs.size()); ++k) {
@@ -135,7 +137,8 @@ TEST_CASE("five positions from random 4-bars: the Burmester pairs contain the or
   std::cout << "[planar synthesis round trip] " << success << "/" << trials << " succeeded (" << recovered
             << " recovered both pivots); worst translation error " << worstT << " (relative), worst angle error " << worstA
             << " rad; worst pair residual " << worstResidual << "; real-pair counts 0/2/4: " << countHist[0] << "/"
-            << countHist[2] << "/" << countHist[4] << "\n";
+            << countHist[2] << "/" << countHist[4]
+            << "; worst non-real residual " << worstComplex << "; worst residual before Newton " << worstAlgebraic << "\n";
   CHECK(countHist[0] == 0);  // the original two pivots are always real
   CHECK(recovered == trials);
   CHECK(success == trials);
@@ -151,11 +154,31 @@ TEMPLATE_TEST_CASE("five arbitrary positions: every pair is exact, real + comple
   for (int c = 0; c < cases; ++c) {
     const BurmesterSynthesis<S> bs(randomPositions<S>(g, 5));
     int cc = -1;
-    S lead(0), pd(0);
-    const auto pairs = bs.burmesterPairs(&cc, &lead, &pd);
+    S complexRes(1), algebraicRes(1);
+    std::string notes;
+    const auto pairs = bs.burmesterPairs(&cc, &complexRes, &algebraicRes, &notes);
     CHECK(int(pairs.size()) + cc == 4);
     CHECK(pairs.size() % 2 == 0);
+    CHECK(complexRes <= tolFor<S>(1 << 14));
+    CHECK(notes == (std::is_same_v<S, float> ? "conic intersection solved in double, pairs polished in float" : ""));
     for (const auto& p : pairs) CHECK(p.residual <= tolFor<S>(1 << 14));
+    // second method: every Burmester centre lies on both centre-point cubics and every circle
+    // point on both circle-point cubics; none is a pole P12, P13, P23 (the spurious intersections
+    // of the cubics, which the two-conic formulation never produces); no pair is returned twice
+    const Poly2<S> F4 = bs.centrePointCurve(4), F5 = bs.centrePointCurve(5);
+    const Poly2<S> C4 = bs.circlePointCurve(4), C5 = bs.circlePointCurve(5);
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      const Vec2<S>& m = pairs[k].centre;
+      const Vec2<S>& z = pairs[k].circle;
+      CHECK(abs(F4(m(0), m(1))) <= tolFor<S>(1 << 14) * F4.magnitude(m(0), m(1)));
+      CHECK(abs(F5(m(0), m(1))) <= tolFor<S>(1 << 14) * F5.magnitude(m(0), m(1)));
+      CHECK(abs(C4(z(0), z(1))) <= tolFor<S>(1 << 14) * C4.magnitude(z(0), z(1)));
+      CHECK(abs(C5(z(0), z(1))) <= tolFor<S>(1 << 14) * C5.magnitude(z(0), z(1)));
+      for (const auto& ij : {std::pair<int, int>{1, 2}, {1, 3}, {2, 3}})
+        CHECK((m - bs.pole(ij.first, ij.second)).norm() > Tolerance<S>::sqrtEpsilon() * bs.scale());
+      for (std::size_t l = k + 1; l < pairs.size(); ++l)
+        CHECK((m - pairs[l].centre).norm() + (z - pairs[l].circle).norm() > Tolerance<S>::sqrtEpsilon() * bs.scale());
+    }
     if (pairs.size() >= 2) {
       const DriveCheck<S> dc = bs.drive(pairs[0], pairs[1]);
       // every position is reached by the linkage in some assembly mode (its circuit may differ)

@@ -13,6 +13,7 @@
 #include "soma/geometry/planar/fourbar.hpp"
 
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace soma::planar {
@@ -21,7 +22,7 @@ template <class S> struct BurmesterPair {
   Vec2<S> centre = Vec2<S>::Zero();  ///< fixed pivot (world)
   Vec2<S> circle = Vec2<S>::Zero();  ///< moving pivot (body coordinates of the moving frame)
   S radius{0};                       ///< link length |M_1 z − m|
-  S residual{0};                     ///< max_i |e_i| / (scale²) after polishing
+  S residual{0};                     ///< max_i |e_i| / ρ², ρ = max(scale, |circle|, |centre − centroid|), after polishing
 };
 
 /// Result of driving a 4-bar through the prescribed positions.
@@ -46,7 +47,8 @@ template <class S> class BurmesterSynthesis {
 
   /// e_i(m, z), i = 2..n (index i is 1-based as in the text).
   S equation(int i, const Vec2<S>& m, const Vec2<S>& z) const;
-  /// max_{i ≥ 2} |e_i(m, z)| / scale².
+  /// max_{i ≥ 2} |e_i(m, z)| / ρ², ρ = max(scale, |z|, |m − centroid of the translations|): relative
+  /// to the size of the terms of e_i (a pair far from the data has rounding floor eps·|z|·r, not eps·scale²).
   S residual(const Vec2<S>& m, const Vec2<S>& z) const;
   /// Pole P_ij of the displacement from position i to j (1-based). Throws for a translation.
   Vec2<S> pole(int i, int j) const;
@@ -63,12 +65,19 @@ template <class S> class BurmesterSynthesis {
   /// The circle-point curve of {1, 2, 3, k}, a cubic in body coordinates.
   Poly2<S> circlePointCurve(int k = 4) const;
 
-  /// Five positions: the real Burmester pairs (up to four), polished by Newton on the four
-  /// bilinear equations. `complexCount` receives the number of non-real solutions (0, 2, 4);
-  /// `leadingDefect` the relative size of the two top resultant coefficients that must vanish
-  /// (the circular points), `poleDefect` the largest remainder of dividing out P12, P13, P23.
-  std::vector<BurmesterPair<S>> burmesterPairs(int* complexCount = nullptr, S* leadingDefect = nullptr,
-                                               S* poleDefect = nullptr) const;
+  /// Five positions: the real Burmester pairs (up to four). The five circle conditions
+  /// |M_i z − m|² = r² are linear in (1, K, m, z, m·z, m×z) with K = |z|² + |m|² − r²; their
+  /// null space is a projective plane on which m·z and m×z cut two conics meeting in exactly
+  /// four points (no spurious poles or circular points to remove). The conics are intersected
+  /// through a degenerate member of their pencil (a line pair, from a 3×3 symmetric eigen-
+  /// decomposition); every solution is polished by complex Newton, the real ones then by Newton
+  /// on e_2..e_5 in S. `complexCount` receives the number of non-real solutions (0, 2, 4),
+  /// `complexResidual` the largest max_i |e_i| / scale² among them (they are genuine solutions),
+  /// `algebraicResidual` the largest residual of the four solutions before any Newton step,
+  /// `notes` how it was solved (float: the conic intersection runs in double, the pairs are
+  /// polished in float) and any solution at infinity (a slider dyad, not counted).
+  std::vector<BurmesterPair<S>> burmesterPairs(int* complexCount = nullptr, S* complexResidual = nullptr,
+                                               S* algebraicResidual = nullptr, std::string* notes = nullptr) const;
 
   /// A 4-bar from two pairs (a: crank c1 = a.centre, b: rocker c4 = b.centre); the coupler
   /// point is the moving frame's origin. Its coupler frame relates to the moving frame by
@@ -85,6 +94,7 @@ template <class S> class BurmesterSynthesis {
   void rowInM(int i, Poly2<S>& cx, Poly2<S>& cy, Poly2<S>& f) const;
   std::vector<SE2<S>> pos_;
   S scale_{1};
+  Vec2<S> centroid_ = Vec2<S>::Zero();
 };
 
 /// Real points of an algebraic curve p(x, y) = 0 in the box [x0, x1] × [y0, y1] (for drawing):
