@@ -194,4 +194,17 @@ TEST_CASE("synthesis: bad input", "[planar][synthesis][extremes]") {
   CHECK_THROWS_AS(BurmesterSynthesis<S>({SE2<S>(), SE2<S>(0.5, Vec2<S>(1, 0)), SE2<S>()}), InvalidInput);
   const BurmesterSynthesis<S> four({SE2<S>(), SE2<S>(0.5, Vec2<S>(1, 0)), SE2<S>(1, Vec2<S>(1, 1)), SE2<S>(1.4, Vec2<S>(0, 2))});
   CHECK_THROWS_AS(four.burmesterPairs(), InvalidInput);
+  // five pure translations: the linear system in (1, K, m, z, m·z, m×z) has rank 4 → InvalidInput;
+  // the same translations with small distinct rotations (the other side) are solved exactly
+  const Vec2<S> d[5] = {{0, 0}, {1, 0.2}, {1.7, 1.1}, {0.4, 2}, {-0.8, 1.3}};
+  std::vector<SE2<S>> tr, rot;
+  for (int i = 0; i < 5; ++i) {
+    tr.push_back(SE2<S>(0, d[i]));
+    rot.push_back(SE2<S>(0.05 * i * i - 0.1 * i, d[i]));
+  }
+  CHECK_THROWS_AS(BurmesterSynthesis<S>(tr).burmesterPairs(), InvalidInput);
+  int cc = -1;
+  const auto pairs = BurmesterSynthesis<S>(rot).burmesterPairs(&cc);
+  CHECK(int(pairs.size()) + cc == 4);
+  for (const auto& p : pairs) CHECK(p.residual <= 1e-13);
 }
