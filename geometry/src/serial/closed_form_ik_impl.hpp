@@ -33,9 +33,11 @@ template <class S> S angleAbout(const Vec3<S>& v, const Vec3<S>& a, const Vec3<S
                                bool* degenerate, const S& scale2) {
   using std::atan2;
   const Vec3<S> ap = a - v * v.dot(a), bp = b - v * v.dot(b);
-  // On the axis when |a′| ≤ 1024 eps · scale: the angle is then lost to round-off. (A threshold on
-  // |a′|² of 1024 eps · scale² flagged genuine postures within 1 % of the axis in float.)
-  if (degenerate) *degenerate = ap.squaredNorm() <= Tolerance<S>::rank() * Tolerance<S>::rank() * scale2;
+  // On the axis when |a′| ≤ √eps · scale: the accuracy of a point computed from a double root of
+  // the positioning quartic (a pose on the singularity). (|a′|² ≤ 1024 eps · scale², i.e. 32√eps,
+  // flagged genuine postures within 1 % of the axis in float; 1024 eps · scale missed the T³
+  // singularity of GF-10.3-closing-remarks in double.)
+  if (degenerate) *degenerate = ap.squaredNorm() <= Tolerance<S>::sqrtEpsilon() * Tolerance<S>::sqrtEpsilon() * scale2;
   return atan2(v.dot(ap.cross(bp)), ap.dot(bp));
 }
 
@@ -88,6 +90,7 @@ template <class S> struct PairRoots {
   std::vector<std::pair<S, S>> angles;  // (φA, φB)
   bool continuum = false;
   bool doubleRoot = false;
+  std::vector<char> nearReal;  ///< per entry of angles: from a near-real complex pair (a candidate)
   std::vector<std::string> notes;
 };
 
@@ -173,12 +176,27 @@ template <class S> PairRoots<S> solveCirclePair(InvRows<S> FA, InvRows<S> FB) {
     for (const auto& ci : c) cmax = std::max<S>(cmax, abs(ci));
     const S cscale = S(1) + G.cwiseAbs().maxCoeff() + h.cwiseAbs().maxCoeff() + abs(e);
     std::vector<S> ts;
+    std::size_t strict = 0;  // ts[0..strict) are roots to round-off, the rest near-real candidates
     if (cmax <= Tolerance<S>::rank() * cscale) {
       out.continuum = true;
       out.notes.push_back("the conic vanishes on the whole circle: one angle is free (0 returned)");
       ts.push_back(S(0));  // ψ = 0: φ = φ0
     } else {
-      ts = quarticRealRoots<S>(c);
+      ts = quarticRealRoots<S>(c);  // roots to round-off of the quartic as computed
+      strict = ts.size();
+      // A double root (a pose on a singularity) splits under the rounding of the coefficients
+      // into a pair x ± iy with |y| up to ~√(coefficient error): keep the real parts of such
+      // near-real pairs as candidates too; finish() keeps a candidate only if Newton brings its
+      // posture onto the pose (residual ≤ √eps), so a genuine complex pair is dropped there.
+      if (ts.size() < 4) {
+        for (const auto& z : polynomialRoots<S>(std::vector<S>(c.begin(), c.end()))) {
+          const S scale = std::max<S>(S(1), abs(z.real()));
+          if (!(z.imag() > S(0)) || z.imag() > Tolerance<S>::input() * scale) continue;
+          bool known = false;
+          for (const S& t : ts) known = known || abs(t - z.real()) <= Tolerance<S>::input() * scale;
+          if (!known) ts.push_back(z.real());
+        }
+      }
     }
     for (std::size_t i = 0; i < ts.size(); ++i) {
       const S phiFree = phi0 + S(2) * atan(ts[i]);
@@ -188,6 +206,7 @@ template <class S> PairRoots<S> solveCirclePair(InvRows<S> FA, InvRows<S> FB) {
       if (i > 0 && abs(ts[i] - ts[i - 1]) <= Tolerance<S>::input() * (S(1) + abs(ts[i])))
         out.doubleRoot = true;
       out.angles.emplace_back(freeIsB ? phiDep : phiFree, freeIsB ? phiFree : phiDep);
+      out.nearReal.push_back(i >= strict && !out.continuum ? 1 : 0);
     }
     return out;
   }
@@ -210,7 +229,10 @@ template <class S> PairRoots<S> solveCirclePair(InvRows<S> FA, InvRows<S> FB) {
   }
   out.doubleRoot = rA.doubleRoot || rB.doubleRoot;
   for (const auto& a : aA)
-    for (const auto& b : aB) out.angles.emplace_back(a, b);
+    for (const auto& b : aB) {
+      out.angles.emplace_back(a, b);
+      out.nearReal.push_back(0);
+    }
   return out;
 }
 
@@ -275,12 +297,19 @@ template <class S> JointVector<S> toJoints(const SerialRobot<S>& robot, const Jo
 
 template <class S>
 void finish(const SerialRobot<S>& robot, const SE3<S>& target, ResidualMode mode,
-            const std::vector<JointVector<S>>& raws, Solution<S>& sol, Clock::time_point t0) {
-  int outside = 0;
-  for (const auto& raw : raws) {
-    JointVector<S> q = toJoints(robot, raw);
+            const std::vector<JointVector<S>>& raws, Solution<S>& sol, Clock::time_point t0,
+            const std::vector<char>& candidate = {}) {
+  int outside = 0, missed = 0;
+  for (std::size_t k = 0; k < raws.size(); ++k) {
+    JointVector<S> q = toJoints(robot, raws[k]);
     S res;
     polish(robot, q, target, mode, res);
+    // A candidate (the real part of a complex pair near the real axis, see solveCirclePair) that
+    // Newton cannot bring onto the pose is not a posture.
+    if (k < candidate.size() && candidate[k] && !(res <= Tolerance<S>::sqrtEpsilon())) {
+      ++missed;
+      continue;
+    }
     q = robot.wrap(q);
     if (!robot.withinLimits(q)) {
       ++outside;
@@ -291,6 +320,8 @@ void finish(const SerialRobot<S>& robot, const SE3<S>& target, ResidualMode mode
   }
   if (outside)
     sol.notes.push_back(std::to_string(outside) + " posture(s) outside the joint limits dropped");
+  if (missed)
+    sol.notes.push_back(std::to_string(missed) + " candidate(s) from near-real roots did not reach the pose and were dropped");
   sol.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
@@ -506,7 +537,10 @@ template <class S> Solution<S> solveArm3R(const SerialRobot<S>& robot, const SE3
   if (pr.doubleRoot) sol.notes.push_back("double root: two postures merge (on a bifurcation surface)");
   std::vector<JointVector<S>> raws;
   const S L2 = robot.lengthScale() * robot.lengthScale();
-  for (const auto& [a3, a1] : pr.angles) {
+  std::vector<char> cand;
+  for (std::size_t k = 0; k < pr.angles.size(); ++k) {
+    const auto [a3, a1] = pr.angles[k];
+    cand.push_back(pr.nearReal[k]);
     const Vec3<S> a = ca.at(a3), b = cb.at(a1);
     bool deg = false;
     const S a2 = angleAbout<S>(J[1].axis, Vec3<S>(a - J[1].point), Vec3<S>(b - J[1].point), &deg, L2);
@@ -516,7 +550,7 @@ template <class S> Solution<S> solveArm3R(const SerialRobot<S>& robot, const SE3
     }
     raws.push_back(Vec3<S>(a1, deg ? S(0) : a2, a3));
   }
-  finish(robot, target, ResidualMode::Position, raws, sol, t0);
+  finish(robot, target, ResidualMode::Position, raws, sol, t0, cand);
   return sol;
 }
 
@@ -525,7 +559,7 @@ namespace {
 /// Pieper robot with the special triple at joints 4-6 (first = 3) or 2-4 (first = 1).
 template <class S>
 std::vector<JointVector<S>> pieperCore(const SerialRobot<S>& robot, const PieperTriple<S>& tri,
-                                       const SE3<S>& target, Solution<S>& sol) {
+                                       const SE3<S>& target, Solution<S>& sol, std::vector<char>& cand) {
   const auto& J = robot.joints();
   const SE3<S> A = target * robot.home().inverse();  // = E1 ··· E6
   const S L2 = robot.lengthScale() * robot.lengthScale();
@@ -558,7 +592,8 @@ std::vector<JointVector<S>> pieperCore(const SerialRobot<S>& robot, const Pieper
   for (const auto& n : pr.notes) sol.notes.push_back(n);
   if (pr.continuum) sol.continuum = true;
   if (pr.doubleRoot) sol.notes.push_back("double root in the positioning quartic (postures merge)");
-  for (const auto& [phA, phB] : pr.angles) {
+  for (std::size_t k = 0; k < pr.angles.size(); ++k) {
+    const auto [phA, phB] = pr.angles[k];
     const Vec3<S> a = ca.at(phA), b = cb.at(phB);
     bool deg = false;
     const S psi = tri.concurrent
@@ -608,6 +643,7 @@ std::vector<JointVector<S>> pieperCore(const SerialRobot<S>& robot, const Pieper
       JointVector<S> full = th;
       full.segment(j0, 3) = t;
       raws.push_back(full);
+      cand.push_back(pr.nearReal[k]);
     }
   }
   return raws;
@@ -627,8 +663,9 @@ template <class S> Solution<S> solvePieper(const SerialRobot<S>& robot, const SE
   sol.notes.push_back(std::string("axes ") + std::to_string(tri.first + 1) + "-" +
                       std::to_string(tri.first + 3) + (tri.concurrent ? " meet in a point" : " are parallel"));
   std::vector<JointVector<S>> raws;
+  std::vector<char> cand;
   if (tri.first == 3 || tri.first == 1) {
-    raws = pieperCore(robot, tri, target, sol);
+    raws = pieperCore(robot, tri, target, sol, cand);
   } else {  // 1-3 or 3-5: solve the reversed robot (T⁻¹ with joints 6..1), where they are 4-6 / 2-4
     const SerialRobot<S> rev = robot.reversed();
     PieperTriple<S> rt = tri;
@@ -636,9 +673,9 @@ template <class S> Solution<S> solvePieper(const SerialRobot<S>& robot, const SE
     // the reversed robot's coordinates are the tool-home frame: point p ↦ M⁻¹ p
     rt.point = robot.home().inverse().act(tri.point);
     rt.direction = robot.home().inverse().so3().act(tri.direction);
-    for (auto& r : pieperCore(rev, rt, SE3<S>(target.inverse()), sol)) raws.push_back(r.reverse().eval());
+    for (auto& r : pieperCore(rev, rt, SE3<S>(target.inverse()), sol, cand)) raws.push_back(r.reverse().eval());
   }
-  finish(robot, target, ResidualMode::Pose, raws, sol, t0);
+  finish(robot, target, ResidualMode::Pose, raws, sol, t0, cand);
   return sol;
 }
 
