@@ -101,9 +101,14 @@ std::vector<double> axisTicks(const PlotAxis& a, double lo, double hi, int targe
   // Decades; thinned to about `target`; with 1–2 decades, add 2 and 5.
   std::vector<double> t;
   const int d0 = int(std::ceil(lo - 1e-9)), d1 = int(std::floor(hi + 1e-9));
-  const int every = std::max(1, (d1 - d0 + target) / std::max(1, target));
+  // Every k-th decade with k from 1, 2, 5, 10, 20, 50, …, at multiples of k (10⁻²⁰, 10⁻⁴⁰, …).
+  const int raw = std::max(1, (d1 - d0 + target - 1) / std::max(1, target));
+  int every = 1;
+  for (int m = 1; every < raw; m *= 10)
+    for (int f : {1, 2, 5})
+      if (every < raw) every = f * m;
   for (int d = d0; d <= d1; ++d)
-    if ((d - d0) % every == 0) t.push_back(d);
+    if (d % every == 0) t.push_back(d);
   if (t.size() < 3)
     for (int d = d0 - 1; d <= d1; ++d)
       for (double m : {2.0, 5.0}) {

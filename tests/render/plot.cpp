@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -173,4 +174,18 @@ TEST_CASE("plot demo: curves, markers, legend, log axis, map", "[.demo][plot]") 
   m.legendSwatches.emplace_back("high", colorMap(1));
   renderPlotPng(m, dir / "plot-map-demo.png", 900, 700);
   CHECK(std::filesystem::exists(dir / "plot-map-demo.png"));
+}
+
+TEST_CASE("plot: log ticks on a wide range fall on round multiples of decades", "[render][plot]") {
+  Plot p;
+  p.y.scale = AxisScale::Log10;
+  p.y.min = 1e-79, p.y.max = 1e1;
+  p.add("", {0, 1}, {1e-70, 1}, palette::blue);
+  Scene s = plotScene(p, 800, 600);
+  std::vector<std::string> labels;
+  for (const auto& l : s.labels) labels.push_back(l.text);
+  // 80 decades with about 5 ticks: every 20th decade, at 10⁻⁶⁰, 10⁻⁴⁰, 10⁻²⁰, 1.
+  for (const char* want : {"10⁻⁶⁰", "10⁻⁴⁰", "10⁻²⁰", "1"})
+    CHECK(std::find(labels.begin(), labels.end(), std::string(want)) != labels.end());
+  CHECK(std::find(labels.begin(), labels.end(), std::string("10⁻¹⁹")) == labels.end());
 }
