@@ -368,7 +368,7 @@ Scene plotScene(const Plot& plot, int width, int height, Camera* camera, PlotFra
     l.offset = {t.dx, t.dy};
     sc.add(l);
   }
-  // Legend, top right inside the plot area, on a translucent white box.
+  // Legend in the chosen corner of the plot area, on a translucent white box.
   struct Entry {
     std::string name;
     Color c;
@@ -379,18 +379,23 @@ Scene plotScene(const Plot& plot, int width, int height, Camera* camera, PlotFra
     if (!s.name.empty()) entries.push_back({s.name, s.c, false, s.dashed, s.markers, s.line});
   for (const auto& [name, c] : plot.legendSwatches) entries.push_back({name, c, true, false, false, false});
   if (!entries.empty()) {
-    const double row = 28, xr0 = right - 16;
+    const double row = 28;
     int chars = 0;
     for (const Entry& e : entries) chars = std::max(chars, codepoints(e.name));
     const double w = 0.56 * 19 * chars + 70, h = row * double(entries.size()) + 12;
+    const bool rightSide = plot.legend == LegendCorner::TopRight || plot.legend == LegendCorner::BottomRight;
+    const bool topSide = plot.legend == LegendCorner::TopRight || plot.legend == LegendCorner::TopLeft;
+    // xr0: the right end of the sample lines; yTop: the top edge of the box.
+    const double xr0 = rightSide ? right - 16 : left + 8 + w;
+    const double yTop = topSide ? top - 8 : bottom + 8 + h;
     Fill bg;
     bg.c = palette::white.withAlpha(0.88f);
-    bg.v = {at(xr0 - w, top - 8 - h, 50), at(xr0 + 8, top - 8 - h, 50), at(xr0 + 8, top - 8, 50), at(xr0 - w, top - 8, 50)};
+    bg.v = {at(xr0 - w, yTop - h, 50), at(xr0 + 8, yTop - h, 50), at(xr0 + 8, yTop, 50), at(xr0 - w, yTop, 50)};
     bg.tri = {{0, 1, 2}, {0, 2, 3}};
     sc.add(std::move(bg));
     for (std::size_t k = 0; k < entries.size(); ++k) {
       const Entry& e = entries[k];
-      const double py = top - 8 - 6 - row * (double(k) + 0.5);
+      const double py = yTop - 6 - row * (double(k) + 0.5);
       if (e.swatch) {
         Fill f;
         f.c = e.c;

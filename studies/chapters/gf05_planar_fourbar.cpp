@@ -246,6 +246,7 @@ void couplerCurves(Context& c) {
   const InstantInvariants<double> inv = InstantInvariants<double>::fromJet(jet);
   const auto pose = *fb.solve(th, 1);
   render::Plot plot;
+  plot.legend = render::LegendCorner::BottomRight;  // the top right holds Ball's point
   plot.title = "Coupler curve, pole, inflection circle and Ball's point (crank-rocker, θ₁ = 1)";
   plot.equalAspect = true;
   plot.x.label = "x";

@@ -189,3 +189,22 @@ TEST_CASE("plot: log ticks on a wide range fall on round multiples of decades", 
     CHECK(std::find(labels.begin(), labels.end(), std::string(want)) != labels.end());
   CHECK(std::find(labels.begin(), labels.end(), std::string("10⁻¹⁹")) == labels.end());
 }
+
+TEST_CASE("plot: the legend goes to the chosen corner", "[render][plot]") {
+  for (const auto corner : {LegendCorner::TopRight, LegendCorner::TopLeft, LegendCorner::BottomRight, LegendCorner::BottomLeft}) {
+    Plot p;
+    p.legend = corner;
+    p.add("the series", {0, 1}, {0, 1}, palette::blue);
+    PlotFrame f;
+    const Scene s = plotScene(p, 800, 600, nullptr, &f);
+    const auto it = std::find_if(s.labels.begin(), s.labels.end(), [](const Label& l) { return l.text == "the series"; });
+    REQUIRE(it != s.labels.end());
+    const bool right = corner == LegendCorner::TopRight || corner == LegendCorner::BottomRight;
+    const bool topSide = corner == LegendCorner::TopRight || corner == LegendCorner::TopLeft;
+    const double cx = (f.left + f.right) / 2, cy = (f.bottom + f.top) / 2;
+    CHECK((it->at.x() > cx) == right);
+    CHECK((it->at.y() > cy) == topSide);
+    CHECK(it->at.x() > f.left);
+    CHECK(it->at.x() < f.right);
+  }
+}

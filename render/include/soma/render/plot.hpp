@@ -58,11 +58,15 @@ struct PlotCells {
   std::vector<Color> cells;
 };
 
+/// Which corner of the plot area the legend box sits in (pick one the data leaves free).
+enum class LegendCorner { TopRight, TopLeft, BottomRight, BottomLeft };
+
 struct Plot {
   std::string title;
   PlotAxis x, y;
   bool equalAspect = false;  ///< one data unit is as long on x as on y (geometric figures)
   bool grid = true;          ///< light grid lines at the ticks
+  LegendCorner legend = LegendCorner::TopRight;
   std::vector<PlotSeries> series;
   std::vector<PlotText> texts;
   std::vector<PlotCells> cells;
