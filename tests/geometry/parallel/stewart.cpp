@@ -1,0 +1,195 @@
+// Forward kinematics of the general Stewart–Gough platform (GF §11.5.4): all 40 complex
+// solutions by homotopy continuation, the real ones polished in the working scalar.
+#include "soma/geometry/parallel/stewart.hpp"
+
+#include "soma/algebra/errors.hpp"
+#include "soma/algebra/study_parameters.hpp"
+#include "support/scalars.hpp"
+
+using namespace soma;
+
+namespace {
+
+/// A random general platform (base radius ~1, platform ~0.6, not planar) and a posture above it.
+template <class S> StewartPlatform<S> randomPlatform(std::mt19937_64& g, SE3<S>* pose) {
+  StewartPlatform<S> P;
+  for (int i = 0; i < 6; ++i) {
+    P.base[i] = Vec3<S>(test::uniform<S>(g), test::uniform<S>(g), test::uniform<S>(g, -0.2, 0.2));
+    P.platform[i] = Vec3<S>(test::uniform<S>(g, -0.6, 0.6), test::uniform<S>(g, -0.6, 0.6), test::uniform<S>(g, -0.1, 0.1));
+  }
+  Vec6<S> xi;
+  xi << test::uniform<S>(g, -0.3, 0.3), test::uniform<S>(g, -0.3, 0.3), test::uniform<S>(g, -0.3, 0.3),
+      test::uniform<S>(g, -0.2, 0.2), test::uniform<S>(g, -0.2, 0.2), test::uniform<S>(g, 0.8, 1.2);
+  *pose = SE3Tangent<S>(xi).exp();
+  P.legs = stewartLegLengths<S>(P, *pose);
+  return P;
+}
+
+/// Distance from g to the nearest posture of the solution (Frobenius norm of the 4×4 difference).
+template <class S> S nearest(const StewartForwardSolution<S>& s, const SE3<S>& g) {
+  S best = S(-1);
+  for (const auto& h : s.postures) {
+    const S d = (h.matrix() - g.matrix()).norm();
+    if (best < S(0) || d < best) best = d;
+  }
+  return best;
+}
+
+template <class S> void checkConjugatePairs(const StewartForwardSolution<S>& s) {
+  int nonReal = 0;
+  for (const auto& x : s.complex_solutions) {
+    S im = S(0);
+    for (const auto& z : x) {
+      using std::abs;
+      im = std::max(im, abs(z.imag()));
+    }
+    if (im <= Tolerance<S>::input()) continue;
+    ++nonReal;
+    CHECK(containsConjugate<S>(s.complex_solutions, x, Tolerance<S>::input()));
+  }
+  CHECK(nonReal % 2 == 0);
+  CHECK(s.real_count % 2 == 0);
+  CHECK(nonReal + s.real_count == s.complexCount());
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("Stewart leg quadric vanishes at the posture that defines the lengths", "[stewart]",
+                   SOMA_TEST_SCALARS) {
+  // GF §11.5.4, GF-11.5.4-stewart-leg-quadric: u·u − L² a·a = 0 with u = a q + 2c − p a.
+  using S = TestType;
+  auto& g = test::rng(11);
+  for (int trial = 0; trial < 5; ++trial) {
+    SE3<S> pose;
+    const StewartPlatform<S> P = randomPlatform<S>(g, &pose);
+    const Vec8<S> v = StudyParameters<S>::fromSE3(pose).coeffs();
+    StudyPointC<S> x;
+    for (int k = 0; k < 8; ++k) x[k] = std::complex<S>(v(k));
+    const auto f = stewartSystem<S>(stewartComplexPlatform<S>(P), x);
+    for (int k = 0; k < 7; ++k) CHECK(std::abs(toDouble(f[k].real())) <= toDouble(Tolerance<S>::identity(256)));
+    // A wrong length leaves a residual of the size of the change (the check can fail).
+    StewartPlatform<S> Q = P;
+    Q.legs[2] += S(1) / S(10);
+    const auto f2 = stewartSystem<S>(stewartComplexPlatform<S>(Q), x);
+    CHECK(std::abs(toDouble(f2[3].real())) > 0.01);
+    CHECK(stewartResidual<S>(P, pose) <= Tolerance<S>::identity(64));
+  }
+}
+
+TEST_CASE("Stewart start platform: 40 finite solutions, reproduced by an independent total-degree run",
+          "[stewart]") {
+  // GF §11.5.4, GF-11.5.4-stewart-forty: a random complex 6-6 platform has 40 solutions.
+  const auto& start = stewartStartSolutions<double>();
+  REQUIRE(start.size() == 40);
+  const auto P = stewartStartPlatform<double>();
+  for (const auto& x : start) {
+    const auto f = stewartSystem<double>(P, x);
+    double fx = 0, xn = 0;
+    for (const auto& z : f) fx = std::max(fx, std::abs(z));
+    for (const auto& z : x) xn = std::max(xn, std::abs(z));
+    CHECK(fx <= Tolerance<double>::identity(4096) * xn * xn);
+  }
+  // Another seed (other gammas) finds the same 40 points.
+  const auto again = stewartTotalDegreeSolve(P, 7);
+  REQUIRE(again.size() == 40);
+  for (const auto& x : again) {
+    bool found = false;
+    for (const auto& y : start) {
+      double d = 0;
+      for (int k = 0; k < 8; ++k) d = std::max(d, std::abs(x[k] - y[k]));
+      found = found || d <= 1e-9;
+    }
+    CHECK(found);
+  }
+}
+
+TEST_CASE("Stewart forward kinematics in double: 40 on random platforms, the defining posture returned",
+          "[stewart]") {
+  auto& g = test::rng(2026);
+  int platforms = 0;
+  for (int trial = 0; trial < 8; ++trial) {
+    SE3<double> pose;
+    const auto P = randomPlatform<double>(g, &pose);
+    const auto s = solveStewartForward<double>(P);
+    INFO("trial " << trial);
+    CHECK(s.complexCount() == 40);
+    CHECK(s.count() >= 1);
+    CHECK(nearest<double>(s, pose) <= 1e-10);
+    CHECK(s.worstResidual() <= Tolerance<double>::identity(64));
+    checkConjugatePairs<double>(s);
+    ++platforms;
+  }
+  CHECK(platforms == 8);
+}
+
+TEMPLATE_TEST_CASE("Stewart forward kinematics in every scalar", "[stewart]", float, long double, __float128,
+                   mpfr::mpreal) {
+  using S = TestType;
+  auto& g = test::rng(77);
+  SE3<S> pose;
+  const auto P = randomPlatform<S>(g, &pose);
+  const auto s = solveStewartForward<S>(P);
+  CHECK(s.complexCount() == 40);
+  const S near = nearest<S>(s, pose);
+  CHECK(near >= S(0));
+  CHECK(near <= Tolerance<S>::sqrtEpsilon());
+  CHECK(s.worstResidual() <= Tolerance<S>::identity(256));
+  checkConjugatePairs<S>(s);
+}
+
+TEST_CASE("Stewart forward kinematics is scale-free: lengths ×1e-8 and ×1e8", "[stewart]") {
+  auto& g = test::rng(5);
+  SE3<double> pose;
+  const auto P = randomPlatform<double>(g, &pose);
+  const auto ref = solveStewartForward<double>(P);
+  REQUIRE(ref.complexCount() == 40);
+  for (double k : {1e-8, 1e8}) {
+    StewartPlatform<double> Q = P;
+    for (int i = 0; i < 6; ++i) {
+      Q.base[i] *= k;
+      Q.platform[i] *= k;
+      Q.legs[i] *= k;
+    }
+    const auto s = solveStewartForward<double>(Q);
+    INFO("scale " << k);
+    CHECK(s.complexCount() == 40);
+    REQUIRE(s.count() == ref.count());
+    CHECK(s.worstResidual() <= Tolerance<double>::identity(64));
+    for (std::size_t j = 0; j < s.count(); ++j) {
+      CHECK((s.postures[j].rotation() - ref.postures[j].rotation()).norm() <= 1e-12);
+      CHECK((s.postures[j].translation() / k - ref.postures[j].translation()).norm() <= 1e-12);
+    }
+  }
+}
+
+TEST_CASE("Stewart forward kinematics: impossible leg lengths give no posture and say so", "[stewart]") {
+  auto& g = test::rng(9);
+  SE3<double> pose;
+  StewartPlatform<double> P = randomPlatform<double>(g, &pose);
+  // Base points ~2 apart, platform points ≤ 1.7 apart, legs 0.05: no assembly exists.
+  for (int i = 0; i < 6; ++i) {
+    P.base[i] *= 3.0;
+    P.legs[i] = 0.05;
+  }
+  const auto s = solveStewartForward<double>(P);
+  CHECK(s.complexCount() == 40);
+  CHECK(s.count() == 0);
+  bool said = false;
+  for (const auto& n : s.notes) said = said || n.find("no real posture") != std::string::npos;
+  CHECK(said);
+}
+
+TEST_CASE("Stewart platform validation names the defect", "[stewart]") {
+  auto& g = test::rng(3);
+  SE3<double> pose;
+  const auto P = randomPlatform<double>(g, &pose);
+  auto Q = P;
+  Q.legs[4] = -1;
+  CHECK_THROWS_WITH(solveStewartForward<double>(Q), Catch::Contains("leg length 5 is negative"));
+  Q = P;
+  Q.base[1](2) = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_WITH(solveStewartForward<double>(Q), Catch::Contains("base point 2 is not finite"));
+  Q = P;
+  for (auto& q : Q.platform) q = P.platform[0];
+  CHECK_THROWS_WITH(solveStewartForward<double>(Q), Catch::Contains("platform points coincide"));
+}
