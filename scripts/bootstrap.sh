@@ -8,6 +8,7 @@ packages=(
   libosmesa6-dev libfreetype-dev fonts-dejavu-core
   catch2 libbenchmark-dev liborocos-kdl-dev
   libcgal-dev libceres-dev libnlopt-cxx-dev libompl-dev libboost-filesystem-dev
+  liburdfdom-dev
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -3,8 +3,8 @@
 //   soma study run ID... [--scalar T] [--bits N] [--out DIR] [--no-figures] [--json]
 //   soma report [--out DIR] [--only GLOB]... [--scalar T] [--bits N] [--no-figures]
 //   soma pose POSE.json [--scalar T] [--bits N] [--json]
-//   soma fk ROBOT.json --joints q1,q2,... [--scalar T] [--json]
-//   soma ik ROBOT.json --pose POSE.json [--method M] [--scalar T] [--json]
+//   soma fk ROBOT.json|ROBOT.urdf [--tip LINK] --joints q1,q2,... [--scalar T] [--json]
+//   soma ik ROBOT.json|ROBOT.urdf [--tip LINK] --pose POSE.json [--method M] [--scalar T] [--json]
 //   soma planar SCENE.json [--json] [--png FILE]
 // Exit codes: 0 every check passed, 1 a check or study failed, 2 bad input (usage, unknown
 // study or scalar, unwritable output).
@@ -186,22 +186,24 @@ int main(int argc, char** argv) {
   pose->add_flag("--json", poseJson, "print one JSON object");
 
   // soma fk / soma ik (DESIGN §6)
-  std::string fkRobot, fkJoints;
+  std::string fkRobot, fkJoints, fkTip;
   ScalarOptions fkScalar;
   bool fkJson = false;
   auto* fk = app.add_subcommand("fk", "forward kinematics: the tool pose of a robot file at a joint vector");
-  fk->add_option("robot", fkRobot, "robot JSON (DESIGN §6: dh, mdh or poe joints)")->required();
+  fk->add_option("robot", fkRobot, "robot JSON (DESIGN §6: dh, mdh or poe joints) or URDF (.urdf: a serial chain)")->required();
+  fk->add_option("--tip", fkTip, "URDF only: the chain's tip link (default: the only leaf link)");
   fk->add_option("--joints", fkJoints, "q1,q2,... (degrees when the robot file says \"angles\": \"degrees\"; --joints=-0.5,... for a leading minus)")
       ->required();
   addScalarOptions(fk, fkScalar);
   fk->add_flag("--json", fkJson, "print one JSON object");
-  std::string ikRobot, ikPose, ikMethod = "auto";
+  std::string ikRobot, ikPose, ikMethod = "auto", ikTip;
   ScalarOptions ikScalar;
   bool ikJson = false;
   auto* ik = app.add_subcommand("ik", "inverse kinematics: every real posture of a robot for a pose");
-  ik->add_option("robot", ikRobot, "robot JSON (DESIGN §6)")->required();
+  ik->add_option("robot", ikRobot, "robot JSON (DESIGN §6) or URDF (.urdf: a serial chain)")->required();
+  ik->add_option("--tip", ikTip, "URDF only: the chain's tip link (default: the only leaf link)");
   ik->add_option("--pose", ikPose, "pose JSON: {\"rotation\": [[3x3]], \"translation\": [x,y,z]}")->required();
-  ik->add_option("--method", ikMethod, "auto wrist3r arm3r pieper general6r")->capture_default_str();
+  ik->add_option("--method", ikMethod, "auto wrist3r arm3r pieper general6r (every scalar); ceres nlopt (double, Newton-polished in other scalars)")->capture_default_str();
   addScalarOptions(ik, ikScalar);
   ik->add_flag("--json", ikJson, "print one JSON object");
 
@@ -229,8 +231,8 @@ int main(int argc, char** argv) {
     if (run->parsed()) return studyRun(runIds, runScalar, runOut, !runNoFigures, runJson);
     if (rep->parsed()) return report(only, repScalar, repOut, !repNoFigures, commandLine(argc, argv));
     if (pose->parsed()) return poseCommand(poseFile, applyScalar(poseScalar), poseJson, std::cout);
-    if (fk->parsed()) return fkCommand(fkRobot, fkJoints, applyScalar(fkScalar), fkJson, std::cout);
-    if (ik->parsed()) return ikCommand(ikRobot, ikPose, ikMethod, applyScalar(ikScalar), ikJson, std::cout);
+    if (fk->parsed()) return fkCommand(fkRobot, fkJoints, applyScalar(fkScalar), fkJson, std::cout, fkTip);
+    if (ik->parsed()) return ikCommand(ikRobot, ikPose, ikMethod, applyScalar(ikScalar), ikJson, std::cout, ikTip);
     if (planar->parsed()) return planarCommand(planarFile, planarJson, planarPng, std::cout);
   } catch (const SelectionError& e) {
     std::cerr << "soma: " << e.what() << "\n";

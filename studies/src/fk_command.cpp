@@ -1,6 +1,7 @@
 #include "soma/studies/fk_command.hpp"
 
 #include "soma/studies/robot_file.hpp"
+#include "soma/studies/urdf_file.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -10,9 +11,9 @@
 namespace soma::studies {
 
 namespace {
-template <class S> int fkImpl(const std::filesystem::path& file, const std::string& joints, bool json,
+template <class S> int fkImpl(const std::filesystem::path& file, const std::string& tip, const std::string& joints, bool json,
                               std::ostream& out) {
-  const RobotFile<S> rf = readRobot<S>(file);
+  const RobotFile<S> rf = readAnyRobot<S>(file, tip);
   const JointVector<S> q = parseJoints<S>(joints, rf);
   const auto t0 = std::chrono::steady_clock::now();
   const SE3<S> T = rf.robot.fk(q);
@@ -58,8 +59,8 @@ template <class S> int fkImpl(const std::filesystem::path& file, const std::stri
 }  // namespace
 
 int fkCommand(const std::filesystem::path& robot, const std::string& joints, ScalarKind scalar,
-              bool json, std::ostream& out) {
-  return withScalar(scalar, [&]<class S>() { return fkImpl<S>(robot, joints, json, out); });
+              bool json, std::ostream& out, const std::string& tip) {
+  return withScalar(scalar, [&]<class S>() { return fkImpl<S>(robot, tip, joints, json, out); });
 }
 
 }  // namespace soma::studies
