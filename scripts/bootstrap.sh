@@ -9,6 +9,7 @@ packages=(
   catch2 libbenchmark-dev liborocos-kdl-dev
   libcgal-dev libceres-dev libnlopt-cxx-dev libompl-dev libboost-filesystem-dev
   liburdfdom-dev
+  phcpack
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,42 +1,21 @@
 // Singularity measures of a serial robot from the singular values of its Jacobian (GF §4.5,
 // GF-10.3-closing-remarks: a singular configuration is one where the joint screws are dependent).
-// The singular values come from a one-sided (Hestenes) Jacobi iteration on the 6 × n matrix:
-// accurate to high relative precision and a few lines long (Eigen's JacobiSVD instantiated for
-// the five scalars took over ten minutes to compile).
+// The singular values come from the one-sided (Hestenes) Jacobi SVD of soma/algebra/small_linalg.hpp:
+// accurate to high relative precision (Eigen's JacobiSVD instantiated for the five scalars took
+// over ten minutes to compile).
 #include "soma/geometry/serial/serial_robot.hpp"
+
+#include "soma/algebra/small_linalg.hpp"
 
 #include <algorithm>
 
 namespace soma {
 
 namespace {
-/// Singular values of a 6 × n matrix, descending (n ≤ 6 keeps the work tiny).
-template <class S> std::vector<S> singularValues(JacobianMatrix<S> A) {
-  using std::abs;
-  using std::sqrt;
-  const int n = int(A.cols());
-  for (int sweep = 0; sweep < 60; ++sweep) {
-    bool rotated = false;
-    for (int i = 0; i < n; ++i)
-      for (int j = i + 1; j < n; ++j) {
-        const S a = A.col(i).squaredNorm(), b = A.col(j).squaredNorm(), c = A.col(i).dot(A.col(j));
-        if (c == S(0) || abs(c) <= Tolerance<S>::epsilon() * sqrt(a * b)) continue;
-        rotated = true;
-        const S zeta = (b - a) / (S(2) * c);
-        const S t = (zeta >= S(0) ? S(1) : S(-1)) / (abs(zeta) + sqrt(S(1) + zeta * zeta));
-        const S cs = S(1) / sqrt(S(1) + t * t), sn = cs * t;
-        for (int r = 0; r < 6; ++r) {
-          const S x = A(r, i), y = A(r, j);
-          A(r, i) = cs * x - sn * y;
-          A(r, j) = sn * x + cs * y;
-        }
-      }
-    if (!rotated) break;
-  }
-  std::vector<S> sv(n);
-  for (int i = 0; i < n; ++i) sv[i] = sqrt(A.col(i).squaredNorm());
-  std::sort(sv.begin(), sv.end(), [](const S& x, const S& y) { return x > y; });
-  sv.resize(std::min(n, 6));
+/// Singular values of a 6 × n Jacobian, descending, at most min(6, n) of them.
+template <class S> std::vector<S> singularValues(const JacobianMatrix<S>& A) {
+  std::vector<S> sv = detail::smallSingularValues<S>(detail::SmallMat<S>(A));
+  sv.resize(std::min<std::size_t>(sv.size(), 6));
   return sv;
 }
 }  // namespace

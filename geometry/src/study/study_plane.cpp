@@ -3,8 +3,9 @@
 
 #include "soma/geometry/study/quaternion_matrices.hpp"
 
+#include "soma/algebra/small_linalg.hpp"
+
 #include <Eigen/LU>
-#include <Eigen/SVD>
 
 namespace soma {
 
@@ -13,13 +14,7 @@ template <class S> std::string str(const S& x) { return toString(x, 3); }
 
 /// Numerical rank: singular values above Tolerance::rank × the largest (0 for the zero matrix).
 template <class S, int R, int C> int numericalRank(const Eigen::Matrix<S, R, C>& m) {
-  Eigen::JacobiSVD<Eigen::Matrix<S, R, C>> svd(m);
-  const auto& s = svd.singularValues();
-  if (!(s(0) > S(0))) return 0;
-  int r = 0;
-  for (int k = 0; k < s.size(); ++k)
-    if (s(k) > Tolerance<S>::rank() * s(0)) ++r;
-  return r;
+  return detail::smallNumericalRank<S>(detail::SmallMat<S>(m));
 }
 }  // namespace
 
@@ -126,10 +121,9 @@ template <class S> int intersectionDimension(const StudyPlane<S>& p, const Study
 template <class S> int intersectionDimensionByEigenvalues(const StudyPlane<S>& p, const StudyPlane<S>& q) {
   const Mat4<S> K = p.M() * q.M().transpose() - Mat4<S>::Identity();
   // K = 0 (the same plane): rank 0. Otherwise compare with the scale of M (1), not of K.
-  Eigen::JacobiSVD<Mat4<S>> svd(K);
   int r = 0;
-  for (int k = 0; k < 4; ++k)
-    if (svd.singularValues()(k) > Tolerance<S>::rank()) ++r;
+  for (const S& sigma : detail::smallSingularValues<S>(detail::SmallMat<S>(K)))
+    if (sigma > Tolerance<S>::rank()) ++r;
   return 4 - r - 1;
 }
 

@@ -1,10 +1,12 @@
 #pragma once
-// Small dense decompositions for screw systems (at most 6 columns): one-sided Jacobi SVD,
-// cyclic Jacobi symmetric eigen-decomposition, pivoted Gram–Schmidt completion and an LU
-// determinant. Hand-written because Eigen's JacobiSVD/SelfAdjointEigenSolver for the five
-// scalars cost minutes of compile time (measured: > 3 min CPU, 2.6 GB for one TU).
-// Included only by the screws/*_impl.hpp files.
+// Small dense decompositions (a handful of rows and columns: screw systems, Jacobians, Study
+// 3-planes): one-sided Jacobi SVD, singular values, numerical rank, cyclic Jacobi symmetric
+// eigen-decomposition, pivoted Gram–Schmidt completion and an LU determinant. Hand-written
+// because Eigen's JacobiSVD/SelfAdjointEigenSolver for the five scalars cost minutes of compile
+// time (measured: > 3 min CPU, 2.6 GB for one TU). Include it from .cpp/_impl files only.
 #include "soma/algebra/tolerance.hpp"
+
+#include <Eigen/Core>
 
 #include <algorithm>
 #include <vector>
@@ -66,6 +68,25 @@ void smallSvd(const SmallMat<S>& a, SmallMat<S>& u, std::vector<S>& sig, SmallMa
     else u.col(k).setZero();
   }
   v = vs;
+}
+
+/// Singular values of A, descending (one-sided Jacobi: accurate relative to ‖A‖).
+template <class S> std::vector<S> smallSingularValues(const SmallMat<S>& a) {
+  SmallMat<S> u, v;
+  std::vector<S> sig;
+  smallSvd<S>(a, u, sig, v);
+  return sig;
+}
+
+/// Numerical rank: the singular values above Tolerance::rank × the largest (0 for the zero
+/// matrix, and for a matrix with a NaN).
+template <class S> int smallNumericalRank(const SmallMat<S>& a) {
+  const std::vector<S> sig = smallSingularValues<S>(a);
+  if (sig.empty() || !(sig[0] > S(0))) return 0;
+  int r = 0;
+  for (const S& s : sig)
+    if (s > Tolerance<S>::rank() * sig[0]) ++r;
+  return r;
 }
 
 /// Symmetric eigen-decomposition by cyclic Jacobi; eigenvalues descending, orthonormal vectors.

@@ -2,7 +2,7 @@
 // Definitions of identification.hpp; included only by geometry/src/screws/identification.cpp.
 #include "soma/geometry/screws/identification.hpp"
 
-#include "soma/geometry/screws/small_linalg.hpp"
+#include "soma/algebra/small_linalg.hpp"
 
 #include <limits>
 

@@ -2,7 +2,7 @@
 // Definitions of screw_system.hpp; included only by geometry/src/screws/screw_system.cpp (the
 // explicit instantiations), so users pay no decomposition instantiations.
 #include "soma/geometry/screws/screw_system.hpp"
-#include "soma/geometry/screws/small_linalg.hpp"
+#include "soma/algebra/small_linalg.hpp"
 
 #include <string>
 
