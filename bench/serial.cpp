@@ -11,6 +11,8 @@
 #include <kdl/chain.hpp>
 #include <kdl/chainfksolverpos_recursive.hpp>
 #include <kdl/chainiksolverpos_lma.hpp>
+#include <kdl/chainiksolverpos_nr_jl.hpp>
+#include <kdl/chainiksolvervel_pinv.hpp>
 #endif
 
 #include <random>
@@ -150,6 +152,35 @@ void BM_kdl_ik_lma_puma_one(benchmark::State& st) {
   st.counters["converged"] = double(ok) / double(n);
 }
 BENCHMARK(BM_kdl_ik_lma_puma_one);
+
+// KDL's Newton–Raphson with joint limits (ChainIkSolverPos_NR_JL: pseudo-inverse velocity solver,
+// limits ±2π so they never bind), one posture from the same 0.3 rad start.
+void BM_kdl_ik_nrjl_puma_one(benchmark::State& st) {
+  const KDL::Chain chain = kdlPuma();
+  KDL::JntArray qmin(6), qmax(6);
+  for (int k = 0; k < 6; ++k) qmin(k) = -2 * M_PI, qmax(k) = 2 * M_PI;
+  KDL::ChainFkSolverPos_recursive fk(chain);
+  KDL::ChainIkSolverVel_pinv vel(chain);
+  KDL::ChainIkSolverPos_NR_JL ik(chain, qmin, qmax, fk, vel, 100, 1e-10);
+  std::vector<KDL::Frame> targets;
+  std::vector<KDL::JntArray> seeds;
+  for (std::size_t i = 0; i < kPool; ++i) {
+    targets.push_back(toKdl(pool().pose[i]));
+    KDL::JntArray s(6);
+    for (int k = 0; k < 6; ++k) s(k) = pool().q[i](k) + 0.3;
+    seeds.push_back(s);
+  }
+  KDL::JntArray out(6);
+  std::size_t i = 0, ok = 0, n = 0;
+  for (auto _ : st) {
+    const std::size_t k = i++ % kPool;
+    ok += ik.CartToJnt(seeds[k], targets[k], out) >= 0;
+    ++n;
+    benchmark::DoNotOptimize(out);
+  }
+  st.counters["converged"] = double(ok) / double(n);
+}
+BENCHMARK(BM_kdl_ik_nrjl_puma_one);
 #endif
 
 }  // namespace

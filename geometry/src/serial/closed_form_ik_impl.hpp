@@ -9,6 +9,7 @@
 
 #include <Eigen/LU>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -24,6 +25,12 @@ template <class S> Mat3<S> rodrigues(const Vec3<S>& v, const S& th) {
   using std::sin;
   const Mat3<S> K = skew(v);
   return Mat3<S>::Identity() + sin(th) * K + (S(1) - cos(th)) * (K * K);
+}
+
+/// w rotated about the unit axis v by the angle with cosine c and sine s (Rodrigues' formula
+/// c w + s v × w + (1 − c)(v·w) v, without forming the matrix).
+template <class S> Vec3<S> rotateAbout(const Vec3<S>& v, const S& c, const S& s, const Vec3<S>& w) {
+  return c * w + s * v.cross(w) + ((S(1) - c) * v.dot(w)) * v;
 }
 
 /// Signed angle of the rotation about unit v taking a to b (both taken relative to a point of
@@ -84,6 +91,43 @@ template <class S> InvRows<S> planeInvariants(const Vec3<S>& v, const Vec3<S>& r
   f << vm.dot(nc.c0), vm.dot(nc.cc), vm.dot(nc.cs),  //
       d - n.dot(r) + nc.c0.dot(w), nc.cc.dot(w), nc.cs.dot(w);
   return f;
+}
+
+/// Real roots among the roots z of the polynomial t (ascending coefficients, degree ≥ 3), by
+/// realRoots' rule (polynomial.cpp): |Im z| ≤ Tolerance::input()·max(1, |Re z|), Newton-polished
+/// (steps kept while |p| falls), and accepted when |p(x)| ≤ 256 eps Σ|c_k x^k|; sorted.
+template <class S> std::vector<S> realRootsOf(const std::vector<S>& t, const std::vector<std::complex<S>>& zs) {
+  using std::abs;
+  const int n = int(t.size()) - 1;
+  auto eval = [&](const S& x) {
+    S p = t[n];
+    for (int k = n - 1; k >= 0; --k) p = p * x + t[k];
+    return p;
+  };
+  std::vector<S> out;
+  out.reserve(zs.size());
+  for (const auto& z : zs) {
+    const S scale = std::max<S>(S(1), abs(z.real()));
+    if (abs(z.imag()) > Tolerance<S>::input() * scale) continue;
+    S x = z.real(), px = eval(x);
+    for (int it = 0; it < 16 && px != S(0); ++it) {
+      S dp = S(0);
+      for (int k = n; k >= 1; --k) dp = dp * x + S(k) * t[k];
+      if (dp == S(0)) break;
+      const S xn = x - px / dp, pn = eval(xn);
+      if (!(abs(pn) < abs(px))) break;
+      x = xn;
+      px = pn;
+    }
+    S mag = S(0), xk = S(1);
+    for (int k = 0; k <= n; ++k) {
+      mag += abs(t[k]) * xk;
+      xk *= abs(x);
+    }
+    if (abs(px) <= Tolerance<S>::identity(256) * mag) out.push_back(x);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 template <class S> struct PairRoots {
@@ -182,14 +226,26 @@ template <class S> PairRoots<S> solveCirclePair(InvRows<S> FA, InvRows<S> FB) {
       out.notes.push_back("the conic vanishes on the whole circle: one angle is free (0 returned)");
       ts.push_back(S(0));  // ψ = 0: φ = φ0
     } else {
-      ts = quarticRealRoots<S>(c);  // roots to round-off of the quartic as computed
+      // The quartic's roots are computed once (Aberth) and split here as quarticRealRoots does
+      // (polynomial.cpp: trimmed degree ≥ 3 → realRoots); degree ≤ 2 goes through it.
+      int deg = 4;
+      while (deg >= 0 && abs(c[deg]) <= Tolerance<S>::epsilon() * cmax) --deg;
+      std::vector<std::complex<S>> zs;
+      if (deg >= 3) {
+        const std::vector<S> t(c.begin(), c.begin() + deg + 1);
+        zs = polynomialRoots<S>(t);
+        ts = realRootsOf<S>(t, zs);
+      } else {
+        ts = quarticRealRoots<S>(c);
+      }
       strict = ts.size();
       // A double root (a pose on a singularity) splits under the rounding of the coefficients
       // into a pair x ± iy with |y| up to ~√(coefficient error): keep the real parts of such
       // near-real pairs as candidates too; finish() keeps a candidate only if Newton brings its
       // posture onto the pose (residual ≤ √eps), so a genuine complex pair is dropped there.
       if (ts.size() < 4) {
-        for (const auto& z : polynomialRoots<S>(std::vector<S>(c.begin(), c.end()))) {
+        if (deg < 3) zs = polynomialRoots<S>(std::vector<S>(c.begin(), c.end()));
+        for (const auto& z : zs) {
           const S scale = std::max<S>(S(1), abs(z.real()));
           if (!(z.imag() > S(0)) || z.imag() > Tolerance<S>::input() * scale) continue;
           bool known = false;
@@ -238,24 +294,78 @@ template <class S> PairRoots<S> solveCirclePair(InvRows<S> FA, InvRows<S> FB) {
 
 enum class ResidualMode { Pose, Position, Rotation };
 
+/// Forward kinematics with rotation matrices (no quaternions), for the residuals:
+/// e^{(q1 + o1) ξ1} ··· e^{(qn + on) ξn} · M (SerialRobot::fk's product of exponentials, GF §4.5).
 template <class S>
-S residualOf(const SerialRobot<S>& robot, const JointVector<S>& q, const SE3<S>& target, ResidualMode mode) {
+void fkMatrix(const SerialRobot<S>& robot, const JointVector<S>& q, const Mat3<S>& RM, const Vec3<S>& tM,
+              Mat3<S>& R, Vec3<S>& t) {
+  using std::cos;
+  using std::sin;
+  R.setIdentity();
+  t.setZero();
+  const auto& J = robot.joints();
+  for (int i = 0; i < robot.dof(); ++i) {
+    const Vec3<S>& v = J[i].axis;
+    const S th = q(i) + J[i].offset;
+    if (J[i].type == JointType::Prismatic) {
+      t += R * (v * th);
+      continue;
+    }
+    const S c = cos(th), s = sin(th), c1 = S(1) - c;
+    Mat3<S> Ri;  // Rodrigues: c I + s [v]× + (1 − c) v vᵀ
+    Ri << c + c1 * v.x() * v.x(), c1 * v.x() * v.y() - s * v.z(), c1 * v.x() * v.z() + s * v.y(),  //
+        c1 * v.y() * v.x() + s * v.z(), c + c1 * v.y() * v.y(), c1 * v.y() * v.z() - s * v.x(),    //
+        c1 * v.z() * v.x() - s * v.y(), c1 * v.z() * v.y() + s * v.x(), c + c1 * v.z() * v.z();
+    const Vec3<S>& p = J[i].point;
+    t += R * Vec3<S>(p - Ri * p);
+    R = (R * Ri).eval();
+  }
+  t += R * tM;
+  R = (R * RM).eval();
+}
+
+/// The target and home pose as matrices, computed once per solve.
+template <class S> struct PoseMatrices {
+  Mat3<S> RT, RM;
+  Vec3<S> tT, tM;
+  PoseMatrices(const SerialRobot<S>& robot, const SE3<S>& target)
+      : RT(target.rotation()), RM(robot.home().rotation()), tT(target.translation()),
+        tM(robot.home().translation()) {}
+};
+
+template <class S>
+S residualOf(const SerialRobot<S>& robot, const JointVector<S>& q, const PoseMatrices<S>& pm, ResidualMode mode) {
   using std::sqrt;
-  const SE3<S> t = robot.fk(q);
+  Mat3<S> R;
+  Vec3<S> t;
+  fkMatrix(robot, q, pm.RM, pm.tM, R, t);
+  const S L = robot.lengthScale();
   switch (mode) {
-    case ResidualMode::Position:
-      return sqrt((t.translation() - target.translation()).squaredNorm()) / robot.lengthScale();
-    case ResidualMode::Rotation: return sqrt((t.rotation() - target.rotation()).squaredNorm());
+    case ResidualMode::Position: return sqrt((t - pm.tT).squaredNorm()) / L;
+    case ResidualMode::Rotation: return sqrt((R - pm.RT).squaredNorm());
     case ResidualMode::Pose: break;
   }
-  return poseResidual(t, target, robot.lengthScale());
+  // poseResidual (serial_robot.hpp): sqrt(max(|R − R*|², |t − t*|² / L²))
+  return sqrt(std::max<S>((R - pm.RT).squaredNorm(), (t - pm.tT).squaredNorm() / (L * L)));
+}
+
+/// Revolute joints wrapped to (−π, π] (SerialRobot::wrap without its copy; in-range values kept).
+template <class S> void wrapInPlace(const SerialRobot<S>& robot, JointVector<S>& q) {
+  using std::atan2;
+  using std::cos;
+  using std::sin;
+  for (int i = 0; i < robot.dof() && i < q.size(); ++i)
+    if (robot.joints()[i].type == JointType::Revolute && !(q(i) > -pi<S>() && q(i) <= pi<S>()))
+      q(i) = atan2(sin(q(i)), cos(q(i)));
 }
 
 /// Newton steps on the posture (full pose: body Jacobian and the SE(3) log; position: the tool
 /// point's velocity columns; rotation: the angular rows), kept only while the residual falls.
 template <class S>
-void polish(const SerialRobot<S>& robot, JointVector<S>& q, const SE3<S>& target, ResidualMode mode, S& res) {
-  res = residualOf(robot, q, target, mode);
+void polish(const SerialRobot<S>& robot, JointVector<S>& q, const SE3<S>& target, const PoseMatrices<S>& pm,
+            ResidualMode mode, S& res) {
+  // Closed forms are exact up to rounding: Newton runs only when the residual is above 64 ulps.
+  res = residualOf(robot, q, pm, mode);
   for (int it = 0; it < 4 && res > Tolerance<S>::identity(); ++it) {
     const JacobianMatrix<S> Js = robot.spatialJacobian(q);
     const SE3<S> t = robot.fk(q);
@@ -282,7 +392,7 @@ void polish(const SerialRobot<S>& robot, JointVector<S>& q, const SE3<S>& target
     }
     if (!allFinite(dq)) return;
     const JointVector<S> qn = q + dq;
-    const S rn = residualOf(robot, qn, target, mode);
+    const S rn = residualOf(robot, qn, pm, mode);
     if (!(rn < res)) return;
     q = qn;
     res = rn;
@@ -292,7 +402,8 @@ void polish(const SerialRobot<S>& robot, JointVector<S>& q, const SE3<S>& target
 template <class S> JointVector<S> toJoints(const SerialRobot<S>& robot, const JointVector<S>& raw) {
   JointVector<S> q(raw.size());
   for (int i = 0; i < raw.size(); ++i) q(i) = raw(i) - robot.joints()[i].offset;
-  return robot.wrap(q);
+  wrapInPlace(robot, q);
+  return q;
 }
 
 template <class S>
@@ -300,22 +411,25 @@ void finish(const SerialRobot<S>& robot, const SE3<S>& target, ResidualMode mode
             const std::vector<JointVector<S>>& raws, Solution<S>& sol, Clock::time_point t0,
             const std::vector<char>& candidate = {}) {
   int outside = 0, missed = 0;
+  const PoseMatrices<S> pm(robot, target);
+  sol.postures.reserve(raws.size());
+  sol.residuals.reserve(raws.size());
   for (std::size_t k = 0; k < raws.size(); ++k) {
     JointVector<S> q = toJoints(robot, raws[k]);
     S res;
-    polish(robot, q, target, mode, res);
+    polish(robot, q, target, pm, mode, res);
     // A candidate (the real part of a complex pair near the real axis, see solveCirclePair) that
     // Newton cannot bring onto the pose is not a posture.
     if (k < candidate.size() && candidate[k] && !(res <= Tolerance<S>::sqrtEpsilon())) {
       ++missed;
       continue;
     }
-    q = robot.wrap(q);
+    wrapInPlace(robot, q);
     if (!robot.withinLimits(q)) {
       ++outside;
       continue;
     }
-    sol.postures.push_back(q);
+    sol.postures.push_back(std::move(q));
     sol.residuals.push_back(res);
   }
   if (outside)
@@ -429,19 +543,25 @@ WristAngles<S> wrist3R(const Vec3<S>& v1, const Vec3<S>& v2, const Vec3<S>& v3, 
   out.doubleRoot = t2.doubleRoot;
   std::vector<S> th2 = t2.angles;
   if (t2.free) th2 = {S(0)};  // v1 = ±v3 and v2 ⟂ both or equal: degenerate wrist
+  using std::cos;
+  using std::sin;
   const Vec3<S> z = R * v3;
+  Vec3<S> x = v3.cross(Vec3<S>::UnitX());
+  if (x.squaredNorm() < S(1) / S(4)) x = v3.cross(Vec3<S>::UnitY());
+  const Vec3<S> Rx = R * x;
+  out.angles.reserve(th2.size());
   for (const S& a2 : th2) {
-    const Vec3<S> y = rodrigues<S>(v2, a2) * v3;  // the book's y = e^{θ2 ad v2} v3
+    const S c2 = cos(a2), s2 = sin(a2);
+    const Vec3<S> y = rotateAbout<S>(v2, c2, s2, v3);  // the book's y = e^{θ2 ad v2} v3
     bool gimbal = false;
     const Vec3<S> yp = y - v1 * v1.dot(y);
     gimbal = yp.squaredNorm() <= Tolerance<S>::identity(64);
     // y'·z' = |y'|² cos θ1 and v1·(y'×z') = |y'|² sin θ1, i.e. −(y×v1)ᵀ R v3 (E5.1).
     const S a1 = gimbal ? S(0) : angleAbout<S>(v1, y, z, nullptr, S(1));
     if (gimbal) out.gimbal = true;
-    const Mat3<S> R3 = rodrigues<S>(v2, a2).transpose() * rodrigues<S>(v1, a1).transpose() * R;
-    Vec3<S> x = v3.cross(Vec3<S>::UnitX());
-    if (x.squaredNorm() < S(1) / S(4)) x = v3.cross(Vec3<S>::UnitY());
-    const S a3 = angleAbout<S>(v3, x, Vec3<S>(R3 * x), nullptr, S(1));
+    // R3 x = e^{−θ2 v2} e^{−θ1 v1} R x
+    const Vec3<S> R3x = rotateAbout<S>(v2, c2, S(-s2), rotateAbout<S>(v1, cos(a1), S(-sin(a1)), Rx));
+    const S a3 = angleAbout<S>(v3, x, R3x, nullptr, S(1));
     out.angles.emplace_back(a1, a2, a3);
   }
   return out;
@@ -562,8 +682,11 @@ std::vector<JointVector<S>> pieperCore(const SerialRobot<S>& robot, const Pieper
                                        const SE3<S>& target, Solution<S>& sol, std::vector<char>& cand) {
   const auto& J = robot.joints();
   const SE3<S> A = target * robot.home().inverse();  // = E1 ··· E6
+  const Mat3<S> RA = A.rotation();
   const S L2 = robot.lengthScale() * robot.lengthScale();
   std::vector<JointVector<S>> raws;
+  raws.reserve(8);
+  cand.reserve(8);
   // Sides of the circle pair: (joint, sign, transformed-by-A⁻¹?) and the middle joint.
   int ja, jb, jm, sa, sb, sm;
   if (tri.first == 3) {
@@ -613,6 +736,46 @@ std::vector<JointVector<S>> pieperCore(const SerialRobot<S>& robot, const Pieper
     // The motion left for the triple.
     SE3<S> X;
     int j0;
+    if (tri.concurrent) {  // the wrist needs only the rotation: matrices, no quaternions
+      using std::cos;
+      using std::sin;
+      // first = 3: X = (E1 E2 E3)⁻¹ A; first = 1: X = E1⁻¹ A E6⁻¹ E5⁻¹ (rotation parts).
+      Mat3<S> RX;
+      j0 = tri.first;
+      for (int col = 0; col < 3; ++col) {
+        Vec3<S> w = RA.col(col);
+        if (tri.first == 3) {
+          for (int i = 0; i < 3; ++i) w = rotateAbout<S>(J[i].axis, cos(th(i)), S(-sin(th(i))), w);
+        } else {
+          w = rotateAbout<S>(J[0].axis, cos(th(0)), S(-sin(th(0))), w);
+        }
+        RX.col(col) = w;
+      }
+      if (tri.first == 1) {  // RX ← RX R6ᵀ R5ᵀ: rows rotated, i.e. (R5 R6 RXᵀ)ᵀ
+        Mat3<S> T = RX.transpose();
+        for (int col = 0; col < 3; ++col) {
+          Vec3<S> w = T.col(col);
+          w = rotateAbout<S>(J[5].axis, cos(th(5)), sin(th(5)), w);
+          w = rotateAbout<S>(J[4].axis, cos(th(4)), sin(th(4)), w);
+          T.col(col) = w;
+        }
+        RX = T.transpose();
+      }
+      const WristAngles<S> w = wrist3R<S>(J[j0].axis, J[j0 + 1].axis, J[j0 + 2].axis, RX);
+      if (w.gimbal) {
+        sol.continuum = true;
+        sol.notes.push_back("wrist gimbal singularity: joints " + std::to_string(j0 + 1) + " and " +
+                            std::to_string(j0 + 3) + " determined only in combination");
+      }
+      if (w.doubleRoot) sol.notes.push_back("wrist double root (postures merge)");
+      for (const auto& t : w.angles) {
+        JointVector<S> full = th;
+        full.segment(j0, 3) = t;
+        raws.push_back(std::move(full));
+        cand.push_back(pr.nearReal[k]);
+      }
+      continue;
+    }
     if (tri.first == 3) {
       X = (J[0].motion(th(0)) * J[1].motion(th(1)) * J[2].motion(th(2))).inverse() * A;
       j0 = 3;

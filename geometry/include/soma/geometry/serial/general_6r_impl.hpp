@@ -119,6 +119,8 @@ template <class S> struct Core {
   std::vector<S> x3;  ///< the real eigenvalue each candidate came from
   int complexCount = 0;
   double rcond = 0, beta = 0, minGap = 0, qRank = 0;
+  double deflationDefect = 0;  ///< |lower-left block| / |K| after deflating x3 = ±i
+  bool deflated = false;       ///< the eigenvalues came from the deflated 16×16 block
   bool suspicious = false;
   std::vector<std::string> notes;
 };
@@ -128,6 +130,243 @@ template <class S> struct Core {
 template <class S> S halfAngleFromPairs(const S& num, const S& den) {
   using std::atan2;
   return S(2) * atan2(num, den);
+}
+
+/// Working storage of the small eigenproblems: a fixed 24×24 array, the active size n ≤ 24.
+template <class S> using Work24 = Eigen::Matrix<S, 24, 24>;
+
+/// Householder vector of x (length m): v with v(0) = 1 and β such that (I − β v vᵀ) x = α e1.
+/// Returns false when x is already a multiple of e1 (nothing to do).
+template <class S> bool householderOf(const S* x, int m, S* v, S& beta, S& alpha) {
+  using std::sqrt;
+  S tail2 = S(0);
+  for (int i = 1; i < m; ++i) tail2 += x[i] * x[i];
+  if (tail2 == S(0)) return false;
+  const S norm = sqrt(x[0] * x[0] + tail2);
+  alpha = x[0] > S(0) ? S(-norm) : norm;
+  const S v0 = x[0] - alpha;
+  v[0] = S(1);
+  for (int i = 1; i < m; ++i) v[i] = x[i] / v0;
+  beta = -v0 / alpha;
+  return true;
+}
+
+/// H ← (I − β v vᵀ) H (I − β v vᵀ) for v supported on rows/columns [r, r + m) of the n×n H.
+template <class S> void reflectBothSides(Work24<S>& H, int n, int r, int m, const S* v, const S& beta) {
+  for (int j = 0; j < n; ++j) {  // from the left: rows r..r+m−1
+    S d = S(0);
+    for (int i = 0; i < m; ++i) d += v[i] * H(r + i, j);
+    d *= beta;
+    if (d != S(0))
+      for (int i = 0; i < m; ++i) H(r + i, j) -= d * v[i];
+  }
+  for (int i = 0; i < n; ++i) {  // from the right: columns r..r+m−1
+    S d = S(0);
+    for (int j = 0; j < m; ++j) d += H(i, r + j) * v[j];
+    d *= beta;
+    if (d != S(0))
+      for (int j = 0; j < m; ++j) H(i, r + j) -= d * v[j];
+  }
+}
+
+/// Eigenvalues of the upper-left n×n block of H (destroyed), n ≤ 24: Householder reduction to
+/// Hessenberg form, then Francis double-shift QR steps with deflation at negligible subdiagonal
+/// entries (Golub & Van Loan, Matrix Computations, Alg. 7.4.2 and 7.5.1–7.5.2), eigenvalues
+/// only (no Schur vectors), on fixed-size storage. Returns false when an eigenvalue needed more
+/// than 60 iterations (the caller falls back to Eigen's EigenSolver).
+template <class S> bool smallEigenvalues(Work24<S>& H, int n, std::vector<std::complex<S>>& lambda) {
+  using std::abs;
+  using std::sqrt;
+  lambda.clear();
+  std::array<S, 24> v;
+  for (int k = 0; k + 2 < n; ++k) {  // Hessenberg reduction
+    std::array<S, 24> x;
+    const int m = n - k - 1;
+    for (int i = 0; i < m; ++i) x[i] = H(k + 1 + i, k);
+    S beta, alpha;
+    if (!householderOf(x.data(), m, v.data(), beta, alpha)) continue;
+    reflectBothSides(H, n, k + 1, m, v.data(), beta);
+    H(k + 1, k) = alpha;
+    for (int i = k + 2; i < n; ++i) H(i, k) = S(0);
+  }
+  const S eps = Tolerance<S>::epsilon();
+  S norm = S(0);
+  for (int i = 0; i < n; ++i)
+    for (int j = std::max(0, i - 1); j < n; ++j) norm += abs(H(i, j));
+  if (norm == S(0)) {
+    for (int i = 0; i < n; ++i) lambda.emplace_back(S(0), S(0));
+    return true;
+  }
+  int hi = n - 1, its = 0;
+  S shiftTotal = S(0);  // exceptional shifts applied to the diagonal
+  while (hi >= 0) {
+    // Active block [lo, hi]: the first negligible subdiagonal entry from the bottom.
+    int lo = hi;
+    for (; lo > 0; --lo) {
+      S sc = abs(H(lo - 1, lo - 1)) + abs(H(lo, lo));
+      if (sc == S(0)) sc = norm;
+      if (abs(H(lo, lo - 1)) <= eps * sc) {
+        H(lo, lo - 1) = S(0);
+        break;
+      }
+    }
+    const S x = H(hi, hi);
+    if (lo == hi) {  // a real eigenvalue splits off
+      lambda.emplace_back(x + shiftTotal, S(0));
+      --hi;
+      its = 0;
+      continue;
+    }
+    const S y = H(hi - 1, hi - 1), w = H(hi, hi - 1) * H(hi - 1, hi);
+    if (lo == hi - 1) {  // a 2×2 block: two real eigenvalues or a complex pair
+      const S p = (y - x) / S(2), q = p * p + w;
+      const S z = sqrt(abs(q));
+      if (q >= S(0)) {
+        const S zz = p >= S(0) ? S(p + z) : S(p - z);
+        const S e1 = x + zz, e2 = zz != S(0) ? S(x - w / zz) : e1;
+        lambda.emplace_back(e1 + shiftTotal, S(0));
+        lambda.emplace_back(e2 + shiftTotal, S(0));
+      } else {
+        lambda.emplace_back(x + p + shiftTotal, z);
+        lambda.emplace_back(x + p + shiftTotal, -z);
+      }
+      hi -= 2;
+      its = 0;
+      continue;
+    }
+    if (its >= 60) return false;
+    S sx = x, sy = y, sw = w;  // shifts: the eigenvalues of the trailing 2×2 block
+    if (its == 10 || its == 20) {  // exceptional shift (breaks cycles)
+      shiftTotal += x;
+      for (int i = 0; i <= hi; ++i) H(i, i) -= x;
+      const S sc = abs(H(hi, hi - 1)) + abs(H(hi - 1, hi - 2));
+      sx = sy = S(3) / S(4) * sc;
+      sw = S(-7) / S(16) * sc * sc;
+    }
+    ++its;
+    // First column of (H − s1)(H − s2) restricted to rows m..m+2, started at the lowest m ≥ lo
+    // where the bulge does not disturb the small subdiagonal entry above it.
+    int m = hi - 2;
+    S p = S(0), q = S(0), r = S(0);
+    for (; m >= lo; --m) {
+      const S z = H(m, m);
+      const S rr = sx - z, ss = sy - z;
+      p = (rr * ss - sw) / H(m + 1, m) + H(m, m + 1);
+      q = H(m + 1, m + 1) - z - rr - ss;
+      r = H(m + 2, m + 1);
+      const S sc = abs(p) + abs(q) + abs(r);
+      p /= sc;
+      q /= sc;
+      r /= sc;
+      if (m == lo) break;
+      const S u = abs(H(m, m - 1)) * (abs(q) + abs(r));
+      const S vv = abs(p) * (abs(H(m - 1, m - 1)) + abs(z) + abs(H(m + 1, m + 1)));
+      if (u <= eps * vv) break;
+    }
+    for (int i = m + 2; i <= hi; ++i) {
+      H(i, i - 2) = S(0);
+      if (i != m + 2) H(i, i - 3) = S(0);
+    }
+    // Chase the bulge with 3-element reflectors (2-element at the bottom).
+    for (int k = m; k < hi; ++k) {
+      const bool last = k == hi - 1;
+      S scale = S(1);
+      if (k != m) {
+        p = H(k, k - 1);
+        q = H(k + 1, k - 1);
+        r = last ? S(0) : H(k + 2, k - 1);
+        scale = abs(p) + abs(q) + abs(r);
+        if (scale == S(0)) continue;
+        p /= scale;
+        q /= scale;
+        r /= scale;
+      }
+      S sn = sqrt(p * p + q * q + r * r);
+      if (p < S(0)) sn = -sn;
+      if (sn == S(0)) continue;
+      if (k == m) {
+        if (lo != m) H(k, k - 1) = -H(k, k - 1);
+      } else {
+        H(k, k - 1) = -sn * scale;
+      }
+      p += sn;
+      const S vx = p / sn, vy = q / sn, vz = r / sn;
+      q /= p;
+      r /= p;
+      for (int j = k; j <= hi; ++j) {  // rows k..k+2
+        S d = H(k, j) + q * H(k + 1, j);
+        if (!last) {
+          d += r * H(k + 2, j);
+          H(k + 2, j) -= d * vz;
+        }
+        H(k + 1, j) -= d * vy;
+        H(k, j) -= d * vx;
+      }
+      const int iMax = std::min(hi, k + 3);
+      for (int i = lo; i <= iMax; ++i) {  // columns k..k+2
+        S d = vx * H(i, k) + vy * H(i, k + 1);
+        if (!last) {
+          d += vz * H(i, k + 2);
+          H(i, k + 2) -= d * r;
+        }
+        H(i, k + 1) -= d * q;
+        H(i, k) -= d;
+      }
+    }
+  }
+  return true;
+}
+
+/// Deflation of the extraneous eigenvalues x3 = ±i of the companion matrix K of
+/// M(x) = A x² + B x + C (K is 24×24 in the first block of `H`; on success the 16×16 block
+/// with the genuine eigenvalues is left in the first block of `H`). M(i) = (C − A) + iB has a
+/// 4-dimensional kernel (the factor (1 + x3²)⁴ of det M), found as the 8-dimensional real kernel
+/// of Z = [[C − A, −B], [B, C − A]] acting on (Re v, Im v) (full-pivot LU; its rank must be 16).
+/// The eigenvectors of K are (v, x v), so {(Re v, −Im v)} spans the real invariant subspace of
+/// ±i; with U the Householder reflectors of a QR of that 24×8 basis, UᵀKU is block upper
+/// triangular and its trailing 16×16 block carries the 16 genuine eigenvalues. `defect` =
+/// |lower-left 16×8 block| / |K|: the deflation is used when it is at round-off
+/// (Tolerance::identity(4096)); otherwise false and H still holds K.
+// Manocha & Canny (1994) eigenproblem; GF §11.5 (16 postures)
+template <class S>
+bool deflateExtraneous(Work24<S>& H, const M12<S>& A, const M12<S>& B, const M12<S>& C, S& defect) {
+  const M12<S> Re = C - A;
+  MX<S> Z(24, 24);
+  Z.topLeftCorner(12, 12) = Re;
+  Z.topRightCorner(12, 12) = -B;
+  Z.bottomLeftCorner(12, 12) = B;
+  Z.bottomRightCorner(12, 12) = Re;
+  Eigen::FullPivLU<MX<S>> lu(Z);
+  lu.setThreshold(Tolerance<S>::sqrtEpsilon());
+  defect = S(1);
+  if (lu.rank() != 16) return false;
+  const MX<S> ker = lu.kernel();
+  Work24<S> W;  // columns 0..7: (Re v, −Im v)
+  for (int k = 0; k < 8; ++k)
+    for (int i = 0; i < 12; ++i) {
+      W(i, k) = ker(i, k);
+      W(12 + i, k) = -ker(12 + i, k);
+    }
+  const S kn = H.norm();
+  Work24<S> K = H;
+  std::array<S, 24> x, v;
+  for (int k = 0; k < 8; ++k) {  // Householder QR of W, each reflector applied to K at once
+    const int m = 24 - k;
+    for (int i = 0; i < m; ++i) x[i] = W(k + i, k);
+    S beta, alpha;
+    if (!householderOf(x.data(), m, v.data(), beta, alpha)) continue;
+    for (int j = k + 1; j < 8; ++j) {
+      S d = S(0);
+      for (int i = 0; i < m; ++i) d += v[i] * W(k + i, j);
+      d *= beta;
+      for (int i = 0; i < m; ++i) W(k + i, j) -= d * v[i];
+    }
+    reflectBothSides(K, 24, k, m, v.data(), beta);
+  }
+  defect = kn > S(0) ? S(K.block(8, 0, 16, 8).norm() / kn) : S(1);
+  if (!(defect <= Tolerance<S>::identity(4096))) return false;
+  H.topLeftCorner(16, 16) = K.block(8, 8, 16, 16);
+  return true;
 }
 
 // GF §11.5 (16 postures of the general 6R); Raghavan–Roth elimination, Manocha–Canny eigenproblem.
@@ -208,7 +447,7 @@ Core<S> eigenCore(const Robot6R<S>& rb, const Mat3<S>& RT, const Vec3<S>& tT) {
   // leading matrix is invertible (β = 0 unless θ3 = π is, nearly, a root: the root at infinity).
   M12<S> A, B, C;
   S rc = S(-1), beta = S(0);
-  Eigen::PartialPivLU<MX<S>> luA(12);
+  Eigen::PartialPivLU<M12<S>> luA;
   auto build = [&](const S& b) {
     const S cb = cos(b), sb = sin(b);
     const M6x9<S> Sc = Sig[1] * cb + Sig[2] * sb, Ss = Sig[2] * cb - Sig[1] * sb;
@@ -225,7 +464,7 @@ Core<S> eigenCore(const Robot6R<S>& rb, const Mat3<S>& RT, const Vec3<S>& tT) {
         C.row(r) /= m;
       }
     }
-    luA.compute(MX<S>(A));
+    luA.compute(A);
     return S(luA.rcond());
   };
   rc = build(S(0));
@@ -253,17 +492,35 @@ Core<S> eigenCore(const Robot6R<S>& rb, const Mat3<S>& RT, const Vec3<S>& tT) {
 
   std::vector<std::complex<S>> lambdas;
   if (rc > Tolerance<S>::rank()) {
-    M24<S> K = M24<S>::Zero(24, 24);
-    K.topRightCorner(12, 12).setIdentity();
-    K.bottomLeftCorner(12, 12) = -luA.solve(MX<S>(C));
-    K.bottomRightCorner(12, 12) = -luA.solve(MX<S>(B));
-    Eigen::EigenSolver<M24<S>> es(K, false);
-    if (es.info() != Eigen::Success) {
-      out.suspicious = true;
-      out.notes.push_back("24×24 eigenvalue iteration did not converge");
-      return out;
+    Work24<S> H = Work24<S>::Zero();
+    H.template topRightCorner<12, 12>().setIdentity();
+    H.template bottomLeftCorner<12, 12>() = -luA.solve(C);
+    H.template bottomRightCorner<12, 12>() = -luA.solve(B);
+    // The 8 extraneous eigenvalues x3 = ±i are deflated first (the QR iteration on 16×16 costs
+    // about (16/24)³ ≈ 0.3 of the 24×24 one); when the deflation is not clean the full matrix is
+    // used. Eigenvalues by a fixed-size Francis QR; Eigen's EigenSolver if that does not converge.
+    S defect = S(0);
+    const bool deflated = deflateExtraneous<S>(H, A, B, C, defect);
+    const int n = deflated ? 16 : 24;
+    out.deflationDefect = toDouble(defect);
+    out.deflated = deflated;
+    if (!deflated)
+      out.notes.push_back("deflation of x3 = ±i not clean (defect " + toString(toDouble(defect), 3) +
+                          "): full 24×24 eigenproblem");
+    const Work24<S> Hn = H;
+    if (!smallEigenvalues<S>(H, n, lambdas)) {
+      const MX<S> Kn = Hn.topLeftCorner(n, n);
+      out.notes.push_back("Francis QR did not converge on the " + std::to_string(n) + "×" +
+                          std::to_string(n) + " matrix: Eigen's EigenSolver used");
+      lambdas.clear();
+      Eigen::EigenSolver<M24<S>> es(Kn, false);
+      if (es.info() != Eigen::Success) {
+        out.suspicious = true;
+        out.notes.push_back("eigenvalue iteration did not converge");
+        return out;
+      }
+      for (int i = 0; i < es.eigenvalues().size(); ++i) lambdas.push_back(es.eigenvalues()(i));
     }
-    for (int i = 0; i < 24; ++i) lambdas.push_back(es.eigenvalues()(i));
   } else {
     // Leading matrix singular for every offset: the generalized eigenproblem of the pencil
     // [[0, I], [−C, −B]] − x [[I, 0], [0, A]] (infinite eigenvalues are dropped).
@@ -300,6 +557,7 @@ Core<S> eigenCore(const Robot6R<S>& rb, const Mat3<S>& RT, const Vec3<S>& tT) {
     if (abs(z.imag()) <= realTol * (S(1) + abs(z))) reals.push_back(z.real());
   }
   out.complexCount = int(lambdas.size()) - nExtra;
+  if (out.deflated) out.complexCount = 16 - nExtra;  // lambdas holds the 16 after deflation
   if (out.complexCount != 16) {
     out.suspicious = true;
     out.notes.push_back(std::to_string(out.complexCount) +
@@ -321,8 +579,8 @@ Core<S> eigenCore(const Robot6R<S>& rb, const Mat3<S>& RT, const Vec3<S>& tT) {
   // Back-substitution for each real x3.
   for (const S& x : reals) {
     const M12<S> M = (A * x + B) * x + C;
-    Eigen::PartialPivLU<MX<S>> lu{MX<S>(M)};
-    VX<S> v = VX<S>::Ones(12);
+    const Eigen::PartialPivLU<M12<S>> lu(M);
+    Eigen::Matrix<S, 12, 1> v = Eigen::Matrix<S, 12, 1>::Ones();
     for (int it = 0; it < 2; ++it) {
       v = lu.solve(v);
       const S n2 = v.squaredNorm();
@@ -384,8 +642,102 @@ template <class S> S wrapAngle(S a) {
   using std::atan2;
   using std::cos;
   using std::sin;
+  if (a > -pi<S>() && a <= pi<S>()) return a;  // already in (−π, π]
   return atan2(sin(a), cos(a));
 }
+
+/// Forward chain of DH links with rotation matrices only (dh.hpp's convention
+/// Rz(θ)·Tz(d)·Tx(a)·Rx(α), translation (a cos θ, a sin θ, d)), θ_i = offset_i + q_i; the axes
+/// z_i and origins o_i of the joints when asked (the spatial Jacobian's columns). GF §3.4 / §4.5
+template <class S>
+void chainForward(const std::array<Link<S>, 6>& L, const std::array<S, 6>& offset,
+                  const std::array<S, 6>& q, Mat3<S>& R, Vec3<S>& t, std::array<Vec3<S>, 6>* z = nullptr,
+                  std::array<Vec3<S>, 6>* o = nullptr) {
+  using std::cos;
+  using std::sin;
+  R.setIdentity();
+  t.setZero();
+  for (int i = 0; i < 6; ++i) {
+    if (z) (*z)[i] = R.col(2);
+    if (o) (*o)[i] = t;
+    const S th = offset[i] + q[i];
+    const S c = cos(th), s = sin(th);
+    t += R * Vec3<S>(L[i].a * c, L[i].a * s, L[i].d);
+    Mat3<S> Ai;
+    Ai << c, -s * L[i].ca, s * L[i].sa, s, c * L[i].ca, -c * L[i].sa, S(0), L[i].sa, L[i].ca;
+    R = (R * Ai).eval();
+  }
+}
+
+/// general6rResidual on precomputed links: max(|R(q) − R*|_F, |t(q) − t*| / scale).
+template <class S>
+S residualOf(const Mat3<S>& R, const Vec3<S>& t, const Mat3<S>& RT, const Vec3<S>& tT, const S& scale) {
+  using std::sqrt;
+  const S er2 = (R - RT).squaredNorm(), et2 = (t - tT).squaredNorm() / (scale * scale);
+  return sqrt(std::max<S>(er2, et2));
+}
+
+/// Newton steps on the pose equations (spatial Jacobian, GF §4.5), each kept only while the
+/// error falls; none when the posture's residual is already ≤ `stop`, and none after it is.
+/// Returns the residual of the final q.
+template <class S>
+S polishLinks(const std::array<Link<S>, 6>& L, const std::array<S, 6>& offset, const Mat3<S>& RT,
+              const Vec3<S>& tT, const S& scale, std::array<S, 6>& q, int iterations, const S& stop) {
+  using M6 = Eigen::Matrix<S, 6, 6>;
+  auto evaluate = [&](const std::array<S, 6>& qq, M6* J, S& res) {
+    Mat3<S> R;
+    Vec3<S> t;
+    std::array<Vec3<S>, 6> z, o;
+    chainForward(L, offset, qq, R, t, &z, &o);
+    res = residualOf(R, t, RT, tT, scale);
+    const Mat3<S> E = RT * R.transpose();
+    Vec6<S> e;
+    e << (E(2, 1) - E(1, 2)) / S(2), (E(0, 2) - E(2, 0)) / S(2), (E(1, 0) - E(0, 1)) / S(2),
+        (tT - t) / scale;
+    if (J)
+      for (int i = 0; i < 6; ++i) {
+        J->col(i).template head<3>() = z[i];
+        J->col(i).template tail<3>() = z[i].cross(t - o[i]) / scale;
+      }
+    return e;
+  };
+  M6 J;
+  S res;
+  Vec6<S> e = evaluate(q, &J, res);
+  if (res <= stop) return res;
+  S err = e.squaredNorm();
+  for (int it = 0; it < iterations; ++it) {
+    const Vec6<S> dq = Eigen::PartialPivLU<M6>(J).solve(e);
+    if (!allFinite(dq)) break;
+    std::array<S, 6> qn = q;
+    for (int i = 0; i < 6; ++i) qn[i] += dq(i);
+    M6 Jn;
+    S resn;
+    const Vec6<S> en = evaluate(qn, &Jn, resn);
+    const S errn = en.squaredNorm();
+    if (!(errn < err)) break;
+    q = qn;
+    e = en;
+    J = Jn;
+    err = errn;
+    res = resn;
+    if (res <= stop) break;
+  }
+  return res;
+}
+
+template <class S> std::array<Link<S>, 6> linksOf(const Robot6R<S>& robot, std::array<S, 6>* offset) {
+  std::array<Link<S>, 6> L;
+  for (int i = 0; i < 6; ++i) {
+    L[i] = linkOf(robot[i]);
+    if (offset) (*offset)[i] = robot[i].theta;
+  }
+  return L;
+}
+
+/// The polish stops at 16 ulps of unit-scale data (the round-off floor of the residual is a few
+/// ulps; a further Newton step cannot improve on it).
+template <class S> S polishStop() { return Tolerance<S>::identity(16); }
 
 template <class S> S lengthScale(const Robot6R<S>& robot, const Vec3<S>& t) {
   using std::abs;
@@ -405,60 +757,24 @@ template <class S> SE3<S> general6rForward(const Robot6R<S>& robot, const std::a
 
 template <class S>
 S general6rResidual(const Robot6R<S>& robot, const SE3<S>& target, const std::array<S, 6>& q) {
-  const SE3<S> T = general6rForward(robot, q);
-  const S L = detail6r::lengthScale(robot, target.translation());
-  const S er = (T.rotation() - target.rotation()).norm();
-  const S et = (T.translation() - target.translation()).norm() / L;
-  return std::max<S>(er, et);
+  std::array<S, 6> off;
+  const auto L = detail6r::linksOf(robot, &off);
+  Mat3<S> R;
+  Vec3<S> t;
+  detail6r::chainForward(L, off, q, R, t);
+  return detail6r::residualOf(R, t, target.rotation(), target.translation(),
+                              detail6r::lengthScale(robot, target.translation()));
 }
 
 // Newton steps on the pose equations (spatial Jacobian, GF §4.5).
 template <class S>
 std::array<S, 6> polishGeneral6R(const Robot6R<S>& robot, const SE3<S>& target,
                                  std::array<S, 6> q, int iterations) {
-  const Mat3<S> RT = target.rotation();
-  const Vec3<S> tT = target.translation();
-  const S L = detail6r::lengthScale(robot, tT);
-  auto evaluate = [&](const std::array<S, 6>& qq, Eigen::Matrix<S, 6, 6>* J) {
-    Mat3<S> R = Mat3<S>::Identity();
-    Vec3<S> t = Vec3<S>::Zero();
-    std::array<Vec3<S>, 6> z, o;
-    for (int i = 0; i < 6; ++i) {
-      z[i] = R.col(2);
-      o[i] = t;
-      const SE3<S> A = dhTransform(robot[i], qq[i]);
-      t = t + R * A.translation();
-      R = R * A.rotation();
-    }
-    const Mat3<S> E = RT * R.transpose();
-    Vec6<S> e;
-    e << (E(2, 1) - E(1, 2)) / S(2), (E(0, 2) - E(2, 0)) / S(2), (E(1, 0) - E(0, 1)) / S(2),
-        (tT - t) / L;
-    if (J)
-      for (int i = 0; i < 6; ++i) {
-        J->col(i).template head<3>() = z[i];
-        J->col(i).template tail<3>() = z[i].cross(t - o[i]) / L;
-      }
-    return e;
-  };
-  Eigen::Matrix<S, 6, 6> J;
-  Vec6<S> e = evaluate(q, &J);
-  S err = e.squaredNorm();
-  for (int it = 0; it < iterations; ++it) {
-    const detail6r::VX<S> dq = Eigen::PartialPivLU<detail6r::MX<S>>(detail6r::MX<S>(J)).solve(detail6r::VX<S>(e));
-    if (!allFinite(dq)) break;
-    std::array<S, 6> qn = q;
-    for (int i = 0; i < 6; ++i) qn[i] += dq(i);
-    Eigen::Matrix<S, 6, 6> Jn;
-    const Vec6<S> en = evaluate(qn, &Jn);
-    const S errn = en.squaredNorm();
-    if (!(errn < err)) break;
-    q = qn;
-    e = en;
-    J = Jn;
-    err = errn;
-    if (err <= Tolerance<S>::epsilon() * Tolerance<S>::epsilon()) break;
-  }
+  std::array<S, 6> off;
+  const auto L = detail6r::linksOf(robot, &off);
+  detail6r::polishLinks(L, off, target.rotation(), target.translation(),
+                        detail6r::lengthScale(robot, target.translation()), q, iterations,
+                        detail6r::polishStop<S>());
   return q;
 }
 
@@ -509,10 +825,15 @@ General6RSolution<S> solveGeneral6R(const Robot6R<S>& robot, const SE3<S>& targe
   std::vector<std::array<S, 6>> found;  // totals φ in the unit-scaled problem
   std::vector<S> res;
   int failed = 0, merged = 0;
+  const std::array<S, 6> zero{};
+  std::array<S, 6> offN;  // zero: rn has θ offsets 0
+  const auto Ln = detail6r::linksOf(rn, &offN);
+  const S scaleN = detail6r::lengthScale(rn, tT);
   auto addCandidate = [&](const std::array<S, 6>& phi0) {
-    std::array<S, 6> phi = polishGeneral6R(rn, Tn, phi0, options.polish_iterations);
+    std::array<S, 6> phi = phi0;
+    const S r = detail6r::polishLinks(Ln, zero, RT, tT, scaleN, phi, options.polish_iterations,
+                                      detail6r::polishStop<S>());
     for (auto& a : phi) a = detail6r::wrapAngle(a);
-    const S r = general6rResidual(rn, Tn, phi);
     if (!(r <= accept)) return 1;
     for (std::size_t k = 0; k < found.size(); ++k) {
       S d = S(0);
@@ -567,6 +888,8 @@ General6RSolution<S> solveGeneral6R(const Robot6R<S>& robot, const SE3<S>& targe
   if (shortAnswer && std::is_void_v<Next>)
     sol.notes.push_back("no higher precision left: the answer above may be short");
 
+  std::array<S, 6> off;
+  const auto Lr = detail6r::linksOf(robot, &off);
   for (std::size_t k = 0; k < found.size(); ++k) {
     JointVector<S> q(6);
     std::array<S, 6> qa;
@@ -574,7 +897,10 @@ General6RSolution<S> solveGeneral6R(const Robot6R<S>& robot, const SE3<S>& targe
       qa[i] = detail6r::wrapAngle(S(found[k][i] - robot[i].theta));
       q(i) = qa[i];
     }
-    const S r = general6rResidual(robot, target, qa);
+    Mat3<S> Rq;
+    Vec3<S> tq;
+    detail6r::chainForward(Lr, off, qa, Rq, tq);
+    const S r = detail6r::residualOf(Rq, tq, target.rotation(), target.translation(), L);
     if (r > full) sol.notes.push_back("posture " + std::to_string(k + 1) + " residual " +
                                       toString(toDouble(r), 3) + " above 4096 ulps");
     sol.postures.push_back(q);

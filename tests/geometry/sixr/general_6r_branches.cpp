@@ -1,0 +1,141 @@
+// The general 6R solver's strategy changes (GF §11.5; general_6r_impl.hpp), each reached on a
+// robot or pose that needs it, and each checked for its answer: the generating posture is among
+// the postures, every residual is at round-off, and when the answer may be short the notes say so.
+#include "soma/geometry/serial/general_6r.hpp"
+
+#include "support/scalars.hpp"
+
+#include <cmath>
+#include <string>
+
+using namespace soma;
+
+namespace {
+
+template <class S> Robot6R<S> randomRobot6(std::mt19937_64& g) {
+  Robot6R<S> rb;
+  for (auto& r : rb) {
+    r.a = test::uniform<S>(g, -1, 1);
+    r.alpha = test::uniform<S>(g, -3.1, 3.1);
+    r.d = test::uniform<S>(g, -1, 1);
+    r.theta = S(0);
+  }
+  return rb;
+}
+
+bool hasNote(const General6RSolution<double>& s, const std::string& what) {
+  for (const auto& n : s.notes)
+    if (n.find(what) != std::string::npos) return true;
+  return false;
+}
+template <class S> bool hasNoteS(const General6RSolution<S>& s, const std::string& what) {
+  for (const auto& n : s.notes)
+    if (n.find(what) != std::string::npos) return true;
+  return false;
+}
+
+/// Smallest joint-space distance (wrapped) from q to a returned posture.
+template <class S> double nearest(const General6RSolution<S>& s, const std::array<S, 6>& q) {
+  double best = 10;
+  for (const auto& p : s.postures) {
+    double d = 0;
+    for (int i = 0; i < 6; ++i) {
+      const double e = toDouble(S(p(i) - q[i]));
+      d = std::max(d, std::abs(std::atan2(std::sin(e), std::cos(e))));
+    }
+    best = std::min(best, d);
+  }
+  return best;
+}
+
+const std::array<double, 6> kQ{0.3, -0.7, 1.1, 0.4, -1.3, 0.9};
+
+}  // namespace
+
+TEST_CASE("general 6R branches: generic robots deflate x3 = ±i and need no re-solve", "[sixr][branches]") {
+  auto& g = test::rng(71);
+  for (int n = 0; n < 20; ++n) {
+    const Robot6R<double> rb = randomRobot6<double>(g);
+    const SE3<double> T = general6rForward(rb, kQ);
+    const auto s = solveGeneral6R(rb, T);
+    INFO("robot " << n);
+    CHECK_FALSE(hasNote(s, "deflation of x3 = ±i not clean"));
+    CHECK_FALSE(hasNote(s, "Francis QR did not converge"));
+    CHECK(s.complex_count == 16);
+    CHECK(nearest(s, kQ) <= 1e-9);
+    CHECK(s.worstResidual() <= Tolerance<double>::identity(64));
+  }
+}
+
+TEST_CASE("general 6R branches: θ3 = π rotates the half-angle variable", "[sixr][branches]") {
+  auto& g = test::rng(72);
+  const Robot6R<double> rb = randomRobot6<double>(g);
+  std::array<double, 6> q = kQ;
+  q[2] = pi<double>();
+  const auto s = solveGeneral6R(rb, general6rForward(rb, q));
+  CHECK(hasNote(s, "half-angle variable rotated"));
+  CHECK(s.theta3_offset != 0.0);
+  CHECK(nearest(s, q) <= 1e-9);
+  CHECK(s.worstResidual() <= Tolerance<double>::identity(64));
+}
+
+TEST_CASE("general 6R branches: three parallel axes 3-5, deflation not clean, full 24×24 problem",
+          "[sixr][branches]") {
+  auto& g = test::rng(73);
+  Robot6R<double> rb = randomRobot6<double>(g);
+  rb[2].alpha = 0;
+  rb[3].alpha = 0;  // axes 3, 4, 5 parallel: the kernel of M(i) is larger than 4
+  const auto s = solveGeneral6R(rb, general6rForward(rb, kQ));
+  CHECK(hasNote(s, "full 24×24 eigenproblem"));
+  CHECK(s.complex_count < 16);  // fewer than 16 finite solutions: said, and re-solved
+  CHECK(hasNote(s, "re-solved in long-double"));
+  CHECK(nearest(s, kQ) <= 1e-9);
+  CHECK(s.worstResidual() <= Tolerance<double>::identity(64));
+}
+
+TEST_CASE("general 6R branches: wrist axes 4-6 meeting, leading matrix singular for every offset (QZ)",
+          "[sixr][branches]") {
+  auto& g = test::rng(74);
+  Robot6R<double> rb = randomRobot6<double>(g);
+  rb[3].a = 0;
+  rb[4].a = 0;
+  rb[4].d = 0;
+  rb[3].alpha = pi<double>() / 2;
+  rb[4].alpha = -pi<double>() / 2;
+  const auto s = solveGeneral6R(rb, general6rForward(rb, kQ));
+  CHECK(hasNote(s, "generalized eigenproblem (QZ)"));
+  CHECK(hasNote(s, "re-solved in long-double"));
+  CHECK(nearest(s, kQ) <= 1e-9);
+  CHECK(s.worstResidual() <= Tolerance<double>::identity(64));
+}
+
+TEST_CASE("general 6R branches: a planar robot (all α = 0) — no eigenvalues, and the answer says so",
+          "[sixr][branches]") {
+  auto& g = test::rng(75);
+  Robot6R<double> rb = randomRobot6<double>(g);
+  for (auto& r : rb) r.alpha = 0;
+  const auto s = solveGeneral6R(rb, general6rForward(rb, kQ));
+  CHECK(hasNote(s, "rank-deficient"));
+  CHECK(hasNote(s, "Eigen's EigenSolver used"));  // the Francis QR fallback
+  CHECK(hasNote(s, "no higher precision left: the answer above may be short"));
+}
+
+TEST_CASE("general 6R branches: float escalates to double when its eigenproblem is too coarse",
+          "[sixr][branches]") {
+  auto& g = test::rng(76);
+  int escalated = 0;
+  for (int n = 0; n < 6; ++n) {
+    const Robot6R<float> rb = randomRobot6<float>(g);
+    std::array<float, 6> q;
+    for (int i = 0; i < 6; ++i) q[i] = float(kQ[i]);
+    const auto s = solveGeneral6R(rb, general6rForward(rb, q));
+    INFO("robot " << n);
+    if (s.solved_in == "double") {
+      ++escalated;
+      CHECK(hasNoteS(s, "re-solved in double"));
+    }
+    CHECK(nearest(s, q) <= 1e-3);
+    CHECK(s.worstResidual() <= Tolerance<float>::identity(4096));
+  }
+  CHECK(escalated >= 1);
+}
