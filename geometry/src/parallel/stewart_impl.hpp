@@ -41,8 +41,10 @@ template <class S> S maxNormA(const X<S>& x) {
 }
 
 /// The tolerance of path tracking: √eps of S, but never below √eps of double (tracking more
-/// tightly than double buys nothing; the endpoints are polished to the precision of S).
-template <class S> S trackEps() {
+/// tightly buys nothing on a well-separated path; the endpoints are polished to the precision
+/// of S). The fine mode of an escalation tracks to √eps of S, never below √eps of float128.
+template <class S> S trackEps(bool fine = false) {
+  if (fine) return std::max(Tolerance<S>::sqrtEpsilon(), scalarCast<S>(Tolerance<__float128>::sqrtEpsilon()));
   return std::max(Tolerance<S>::sqrtEpsilon(), scalarCast<S>(Tolerance<double>::sqrtEpsilon()));
 }
 
@@ -240,6 +242,7 @@ struct TrackOptions {
   double hmax = 0.25;
   double hstart = 0.05;
   int maxSteps = 3000;
+  bool fine = false;  ///< track to √eps of the scalar (an escalation), not to √eps of double
 };
 
 template <class S> struct PathResult {
@@ -248,12 +251,13 @@ template <class S> struct PathResult {
   S tau = S(0);
   S pivotRatio = S(0);
   int steps = 0;
+  int rejects = 0;
 };
 
 /// Newton steps on H(·, τ): returns true when the correction fell below tol·max(1, |x|) within
 /// maxIt steps, each at most half the previous one.
 template <class S, class H>
-bool correct(const H& hom, X<S>& x, const S& t, int maxIt, const S& tol, S* pivot = nullptr) {
+bool correct(const H& hom, X<S>& x, const S& t, int maxIt, const S& tol, S* pivot = nullptr, S* first = nullptr) {
   S prev = S(0);
   for (int it = 0; it < maxIt; ++it) {
     X<S> f;
@@ -265,6 +269,7 @@ bool correct(const H& hom, X<S>& x, const S& t, int maxIt, const S& tol, S* pivo
     for (int k = 0; k < 8; ++k) x[k] -= f[k];
     const S dn = maxNorm<S>(f);
     if (!(dn == dn)) return false;
+    if (it == 0 && first) *first = dn;
     const S scale = std::max(S(1), maxNorm<S>(x));
     if (dn <= tol * scale) return true;
     if (it > 0 && dn > prev / S(2)) return false;
@@ -288,11 +293,14 @@ template <class S, class H> bool tangent(const H& hom, const X<S>& x, const S& t
 template <class S, class H> PathResult<S> trackPath(const H& hom, const X<S>& start, const TrackOptions& o) {
   PathResult<S> r;
   r.x = start;
-  const S tol = trackEps<S>();
+  const S tol = trackEps<S>(o.fine);
   const S hmin = tol;
   S t = S(0), h = scalarCast<S>(o.hstart);
   const S hmax = scalarCast<S>(o.hmax);
-  int good = 0;
+  // The predictor's target relative error, eps(double)^¼ ≈ 1.2e-4 in every scalar: the corrector
+  // (≤ 3 Newton steps) then reaches tol in any scalar; a finer target only adds steps.
+  const S predErr = scalarCast<S>(Tolerance<double>::precision(3));
+  bool justRejected = false;
   for (int step = 0; step < o.maxSteps && t < S(1); ++step) {
     r.steps = step + 1;
     if (t + h > S(1)) h = S(1) - t;
@@ -312,19 +320,28 @@ template <class S, class H> PathResult<S> trackPath(const H& hom, const X<S>& st
     }
     if (ok) {
       for (int k = 0; k < 8; ++k) y[k] = r.x[k] + (h / S(6)) * (k1[k] + S(2) * (k2[k] + k3[k]) + k4[k]);
-      ok = correct<S>(hom, y, t + h, 3, tol);
-      // reject a corrector that moved far from the prediction (a jump to another path)
-    }
-    if (ok) {
-      r.x = y;
-      t += h;
-      if (++good >= 2) {
-        h = std::min(hmax, S(2) * h);
-        good = 0;
+      S first = S(0);
+      ok = correct<S>(hom, y, t + h, 3, tol, nullptr, &first);
+      if (ok) {
+        r.x = y;
+        t += h;
+        // Step control from the predictor's error (the first Newton correction, ~h⁵ for RK4):
+        // aim at predErr, within a factor 2 per step.
+        const S rel = first / std::max(S(1), maxNorm<S>(y));
+        S f = S(2);
+        if (rel > S(0)) {
+          using std::pow;
+          f = std::min(S(2), std::max(S(1) / S(2), pow(predErr / rel, S(1) / S(5))));
+        }
+        if (justRejected && f > S(1)) f = S(1);  // no growth right after a rejection
+        h = std::min(hmax, h * f);
+        justRejected = false;
       }
-    } else {
+    }
+    if (!ok) {
+      ++r.rejects;
+      justRejected = true;
       h /= S(2);
-      good = 0;
       if (h < hmin) break;
     }
   }
@@ -361,9 +378,6 @@ template <class S, class H> PathResult<S> trackPath(const H& hom, const X<S>& st
     }
   }
   r.pivotRatio = piv;
-  if (std::getenv("STEWART_DEBUG"))
-    std::fprintf(stderr, "path end: steps %d conv %d piv %.3e |a|/|x| %.3e |x| %.3e dn %.3e\n", r.steps, int(conv), toDouble(piv),
-                 toDouble(maxNormA<S>(y) / maxNorm<S>(y)), toDouble(maxNorm<S>(y)), toDouble(dn));
   r.x = y;
   r.end = conv && piv > Tolerance<S>::sqrtEpsilon() ? PathEnd::Finite : PathEnd::Singular;
   return r;
@@ -635,7 +649,7 @@ template <class S> std::string sci(const S& v) {
 }
 
 /// The parameter homotopy from the start platform to the (centred, scaled) real platform Pn.
-template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S>& user) {
+template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S>& user, bool fine) {
   StewartForwardSolution<S> out;
   // Centre and scale: p' = (p − p̄)/σ, q' = (q − q̄)/σ, L' = L/σ.
   Vec3<S> pb = Vec3<S>::Zero(), qb = Vec3<S>::Zero();
@@ -665,6 +679,7 @@ template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S
   }
   hom.h = chart<S>();
   const S dupTol = Tolerance<S>::input();
+  using std::sqrt;
 
   std::vector<X<S>> finite;
   int atInfinity = 0, singular = 0, failed = 0;
@@ -684,6 +699,7 @@ template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S
       for (std::size_t k = 0; k < starts.size(); ++k) todo.push_back(static_cast<int>(k));
     }
     TrackOptions o;
+    o.fine = fine;
     o.hmax = hmaxes[attempt];
     o.hstart = std::min(o.hstart, o.hmax);
     std::vector<int> again;
@@ -701,11 +717,14 @@ template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S
         } else if (attempt < 2) {
           again.push_back(k);  // two paths met at a nonsingular point: path jumping
         }
-      } else if (infinite || (r.end == PathEnd::Failed && r.tau > S(1) - Tolerance<S>::sqrtEpsilon() &&
-                              maxNormA<S>(r.x) <= trackEps<S>() * maxNorm<S>(r.x))) {
+      } else if (infinite) {
         ++atInfinity;
-      } else if (r.end == PathEnd::Singular) {
-        ++singular;
+      } else if (r.end == PathEnd::Singular || r.tau >= S(1) - sqrt(trackEps<S>())) {
+        // The step collapsed just before τ = 1 (or Newton does not converge quadratically at
+        // τ = 1): the endpoint is a singular solution of a degenerate platform; a smaller step
+        // or another gamma ends there again.
+        if (maxNormA<S>(r.x) <= sqrt(trackEps<S>()) * maxNorm<S>(r.x)) ++atInfinity;
+        else ++singular;
       } else {
         ++failed;
         again.push_back(k);
@@ -720,6 +739,7 @@ template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S
   }
   out.paths_failed = failed;
   out.paths_at_infinity = atInfinity;
+  out.paths_singular = singular;
   if (atInfinity > 0)
     out.notes.push_back(std::to_string(atInfinity) + " paths ended on the exceptional plane a = 0 (a degenerate platform)");
   if (singular > 0)
@@ -765,14 +785,39 @@ template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S
 
 }  // namespace stewart_detail
 
-template <class S> StewartForwardSolution<S> solveStewartForward(const StewartPlatform<S>& P) {
+namespace stewart_detail {
+/// True when the six points are three distinct points, each used twice (to √eps of the size).
+template <class S> bool threePairs(const std::array<Vec3<S>, 6>& x, const S& size) {
+  const S tol2 = Tolerance<S>::sqrtEpsilon() * Tolerance<S>::sqrtEpsilon() * size * size;
+  for (int i = 0; i < 6; ++i) {
+    int same = 0;
+    for (int j = 0; j < 6; ++j) same += j != i && (x[i] - x[j]).squaredNorm() <= tol2;
+    if (same != 1) return false;
+  }
+  return true;
+}
+}  // namespace stewart_detail
+
+template <class S> StewartForwardSolution<S> solveStewartForward(const StewartPlatform<S>& P, bool fineTracking) {
   validateStewartPlatform<S>(P);
   const auto t0 = std::chrono::steady_clock::now();
-  StewartForwardSolution<S> out = stewart_detail::forwardCore<S>(P);
+  StewartForwardSolution<S> out = stewart_detail::forwardCore<S>(P, fineTracking);
+  // A 6-3 (or 3-6) platform: the joints coincide in pairs on one side; (2σ₄)³ = 16 postures.
+  // GF §11.5.2, GF-11.5.2-6-3-stewart-sixteen
+  const S size = stewartScale<S>(P);
+  const bool sixThree = stewart_detail::threePairs<S>(P.platform, size) || stewart_detail::threePairs<S>(P.base, size);
+  if (sixThree) {
+    out.expected_count = 16;
+    out.notes.push_back("a 6-3 platform (joints coincide in pairs): at most 16 postures (GF §11.5.2); the other " +
+                        std::to_string(40 - out.complexCount()) + " of the 40 general paths end at singular points");
+  }
   const int found = out.complexCount();
-  const bool explained = found + out.paths_at_infinity >= 40 || out.paths_failed == 0;
-  // Short with failed paths: escalate precision (double → __float128) and say so.
-  if (found < 40 && !explained) {
+  // Short with a few failed or singular endpoints (two solutions close together, a platform near
+  // a singular configuration): re-solve in float128, which tracks 10⁹ times more tightly, and say
+  // so. Many singular endpoints (more than 8 of 40) mean a degenerate platform (6-3: 24); a wider
+  // scalar ends there again, so the count is reported as it is.
+  const int unresolved = out.paths_failed + out.paths_singular;
+  if (found < out.expected_count && unresolved > 0 && (unresolved <= 8 || out.paths_failed > 0)) {
     if constexpr (std::is_same_v<S, float> || std::is_same_v<S, double> || std::is_same_v<S, long double>) {
       StewartPlatform<__float128> Q;
       for (int i = 0; i < 6; ++i) {
@@ -780,12 +825,12 @@ template <class S> StewartForwardSolution<S> solveStewartForward(const StewartPl
         Q.platform[i] = castMatrix<__float128>(P.platform[i]);
         Q.legs[i] = scalarCast<__float128>(P.legs[i]);
       }
-      const auto hi = solveStewartForward<__float128>(Q);
+      const auto hi = solveStewartForward<__float128>(Q, true);
       if (hi.complexCount() > found) {
         StewartForwardSolution<S> esc;
         esc.notes = out.notes;
         esc.notes.push_back("found " + std::to_string(found) + " of 40 in " + std::string(scalarName<S>()) +
-                            "; re-solved in float128: " + std::to_string(hi.complexCount()));
+                            "; re-solved in float128 (paths tracked to 1e-17): " + std::to_string(hi.complexCount()));
         for (const auto& n : hi.notes) esc.notes.push_back("float128: " + n);
         for (const auto& x : hi.complex_solutions) {
           StudyPointC<S> y;
@@ -798,17 +843,23 @@ template <class S> StewartForwardSolution<S> solveStewartForward(const StewartPl
           esc.residuals.push_back(stewartResidual<S>(P, g));
         }
         esc.real_count = hi.real_count;
+        esc.expected_count = out.expected_count;
         esc.paths_tracked = out.paths_tracked + hi.paths_tracked;
         esc.paths_failed = hi.paths_failed;
         esc.paths_at_infinity = hi.paths_at_infinity;
+        esc.paths_singular = hi.paths_singular;
         out = esc;
       }
     }
   }
-  if (out.complexCount() < 40)
-    out.notes.push_back("SHORT: " + std::to_string(out.complexCount()) + " of 40 complex solutions found (" +
-                        std::to_string(out.paths_failed) + " paths failed, " + std::to_string(out.paths_at_infinity) +
-                        " at infinity)");
+  if (out.complexCount() < out.expected_count)
+    out.notes.push_back("SHORT: " + std::to_string(out.complexCount()) + " of " + std::to_string(out.expected_count) +
+                        " complex solutions found (" +
+                        std::to_string(out.paths_failed) + " paths failed, " + std::to_string(out.paths_singular) +
+                        " singular, " + std::to_string(out.paths_at_infinity) + " at infinity)" +
+                        (out.paths_failed == 0 && out.paths_singular > 8
+                             ? ": a degenerate platform (a 6-3 platform has 16 postures, GF §11.5.2)"
+                             : ""));
   if (out.postures.empty())
     out.notes.push_back("no real posture: all " + std::to_string(out.complexCount()) +
                         " solutions are complex (these leg lengths cannot be assembled)");
@@ -826,7 +877,7 @@ template <class S> StewartForwardSolution<S> solveStewartForward(const StewartPl
   template StewartComplexPlatform<S> stewartComplexPlatform<S>(const StewartPlatform<S>&);                \
   template StewartComplexPlatform<S> stewartStartPlatform<S>();                                           \
   template const std::vector<StudyPointC<S>>& stewartStartSolutions<S>();                                 \
-  template StewartForwardSolution<S> solveStewartForward<S>(const StewartPlatform<S>&);                   \
+  template StewartForwardSolution<S> solveStewartForward<S>(const StewartPlatform<S>&, bool);             \
   template bool containsConjugate<S>(const std::vector<StudyPointC<S>>&, const StudyPointC<S>&, const S&);
 
 }  // namespace soma

@@ -72,6 +72,10 @@ template <class S> struct StewartForwardSolution {
   int paths_failed = 0;
   /// Paths whose endpoint lies on the exceptional plane a = 0 (degenerate platforms).
   int paths_at_infinity = 0;
+  /// Paths that end at a singular point (the step collapses just before τ = 1, or Newton is not
+  /// quadratic there): a multiple solution of a degenerate platform (6-3: 24 of 40), or two
+  /// solutions too close together for the scalar.
+  int paths_singular = 0;
   double seconds = 0;
   std::string method = "homotopy";
   std::vector<std::string> notes;
@@ -120,9 +124,12 @@ std::vector<StudyPointC<double>> stewartTotalDegreeSolve(const StewartComplexPla
 /// degree homotopy) and Newton-polished in S; cached.
 template <class S> const std::vector<StudyPointC<S>>& stewartStartSolutions();
 
-/// All postures of a platform by the parameter homotopy from the start platform.
+/// All postures of a platform by the parameter homotopy from the start platform. fineTracking:
+/// track to √eps of S (never below float128's) instead of √eps of double — the escalation used
+/// when a few paths end singular (two solutions very close together); slow in float128/mpfr.
 /// GF §11.5.4, GF-11.5.4-stewart-forty
-template <class S> StewartForwardSolution<S> solveStewartForward(const StewartPlatform<S>& P);
+template <class S>
+StewartForwardSolution<S> solveStewartForward(const StewartPlatform<S>& P, bool fineTracking = false);
 
 /// True when the solution set holds x's complex conjugate (as a point of CP⁷) within tol.
 template <class S> bool containsConjugate(const std::vector<StudyPointC<S>>& set, const StudyPointC<S>& x,
@@ -138,7 +145,7 @@ template <class S> bool containsConjugate(const std::vector<StudyPointC<S>>& set
   extern template StewartComplexPlatform<S> stewartComplexPlatform<S>(const StewartPlatform<S>&);         \
   extern template StewartComplexPlatform<S> stewartStartPlatform<S>();                                    \
   extern template const std::vector<StudyPointC<S>>& stewartStartSolutions<S>();                          \
-  extern template StewartForwardSolution<S> solveStewartForward<S>(const StewartPlatform<S>&);            \
+  extern template StewartForwardSolution<S> solveStewartForward<S>(const StewartPlatform<S>&, bool);      \
   extern template bool containsConjugate<S>(const std::vector<StudyPointC<S>>&, const StudyPointC<S>&,    \
                                             const S&);
 SOMA_FOR_EACH_SCALAR(SOMA_STEWART_EXTERN)
