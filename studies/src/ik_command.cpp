@@ -55,10 +55,10 @@ Solution<S> general6R(const RobotFile<S>& rf, const SE3<S>& target, Numeric nume
       for (const auto& qd : gd.postures) {
         std::array<S, 6> q;
         for (int i = 0; i < 6; ++i) q[i] = scalarCast<S>(qd(i));
-        q = polishGeneral6R<S>(rows, flange, q, 12);
+        q = polishGeneral6R<S>(rows, flange, q, General6ROptions{}.polish_iterations);
         JointVector<S> v(6);
         for (int i = 0; i < 6; ++i) v(i) = q[i];
-        g.postures.push_back(v);
+        g.postures.push_back(rf.robot.wrap(v));
         g.residuals.push_back(general6rResidual<S>(rows, flange, q));
       }
       g.notes.push_back(name + " enumerates in double; each posture Newton-polished in " +
