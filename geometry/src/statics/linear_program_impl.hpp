@@ -34,12 +34,19 @@ template <class S> bool runSimplex(LpMat<S>& T, std::vector<Eigen::Index>& basis
         break;
       }
     if (e < 0) return true;
+    // Ratio test on the entries above a relative pivot tolerance (√ε × the column's largest: a
+    // tinier pivot blows the tableau up); among ratios tied within tol, the largest pivot.
+    using std::abs;
+    using std::max;
+    S colMax(0);
+    for (Eigen::Index i = 0; i < m; ++i) colMax = max(colMax, S(abs(T(i, e))));
+    const S pivTol = max(tol, S(Tolerance<S>::sqrtEpsilon() * colMax));
     Eigen::Index r = -1;
     S best(0);
     for (Eigen::Index i = 0; i < m; ++i) {
-      if (!(T(i, e) > tol)) continue;
-      const S ratio = T(i, last) / T(i, e);
-      if (r < 0 || ratio < best || (ratio == best && basis[std::size_t(i)] < basis[std::size_t(r)])) {
+      if (!(T(i, e) > pivTol)) continue;
+      const S ratio = max(S(0), S(T(i, last))) / T(i, e);
+      if (r < 0 || ratio < best - tol || (!(ratio > best + tol) && T(i, e) > T(r, e))) {
         r = i;
         best = ratio;
       }
