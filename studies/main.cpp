@@ -6,6 +6,7 @@
 //   soma fk ROBOT.json|ROBOT.urdf [--tip LINK] --joints q1,q2,... [--scalar T] [--json]
 //   soma ik ROBOT.json|ROBOT.urdf [--tip LINK] --pose POSE.json [--method M] [--scalar T] [--json]
 //   soma planar SCENE.json [--json] [--png FILE]
+//   soma stewart PLATFORM.json [--method M] [--scalar T] [--json]
 // Exit codes: 0 every check passed, 1 a check or study failed, 2 bad input (usage, unknown
 // study or scalar, unwritable output).
 #include "soma/algebra/errors.hpp"
@@ -16,6 +17,7 @@
 #include "soma/studies/pose_command.hpp"
 #include "soma/studies/report.hpp"
 #include "soma/studies/runner.hpp"
+#include "soma/studies/stewart_command.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -219,6 +221,19 @@ int main(int argc, char** argv) {
   planar->add_flag("--json", planarJson, "print one JSON object");
   planar->add_option("--png", planarPng, "write a figure to this PNG file");
 
+  // soma stewart (DESIGN §6)
+  std::string stewartFile, stewartMethod = "homotopy";
+  ScalarOptions stewartScalar;
+  bool stewartJson = false;
+  auto* stewart = app.add_subcommand(
+      "stewart", "forward kinematics of a Stewart-Gough platform: all 40 complex solutions, the real postures");
+  stewart->add_option("platform", stewartFile, "platform JSON: {\"base\": [6 points], \"platform\": [6 points], "
+                                               "\"leg_lengths\": [6]}")
+      ->required();
+  stewart->add_option("--method", stewartMethod, "homotopy")->capture_default_str();
+  addScalarOptions(stewart, stewartScalar);
+  stewart->add_flag("--json", stewartJson, "print one JSON object");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -234,6 +249,8 @@ int main(int argc, char** argv) {
     if (fk->parsed()) return fkCommand(fkRobot, fkJoints, applyScalar(fkScalar), fkJson, std::cout, fkTip);
     if (ik->parsed()) return ikCommand(ikRobot, ikPose, ikMethod, applyScalar(ikScalar), ikJson, std::cout, ikTip);
     if (planar->parsed()) return planarCommand(planarFile, planarJson, planarPng, std::cout);
+    if (stewart->parsed())
+      return stewartCommand(stewartFile, stewartMethod, applyScalar(stewartScalar), stewartJson, std::cout);
   } catch (const SelectionError& e) {
     std::cerr << "soma: " << e.what() << "\n";
     return kExitBadInput;

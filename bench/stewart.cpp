@@ -1,0 +1,72 @@
+// Stewart–Gough forward kinematics (GF §11.5.4): all 40 complex solutions of a general 6-6
+// platform by soma's parameter homotopy (geometry/parallel/stewart.hpp), then the real postures
+// polished by Newton, per platform, over a fixed pool of random platforms (seed 20261130; base
+// joints in [−1, 1]² × [−0.2, 0.2], platform joints in [−0.6, 0.6]² × [−0.1, 0.1], a random
+// posture above the base defines the leg lengths). The start system (a total-degree homotopy on
+// a complex platform, once per process) is solved before timing. papers/benchmarks/stewart.md
+// records the numbers. Goal from issue 8: ≤ 1 ms median for all 40 in double.
+#include "soma/geometry/parallel/stewart.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <random>
+#include <vector>
+
+namespace {
+using namespace soma;
+
+constexpr std::size_t kPool = 32;
+
+const std::vector<StewartPlatform<double>>& pool() {
+  static const std::vector<StewartPlatform<double>> platforms = [] {
+    std::mt19937_64 g(20261130);
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::vector<StewartPlatform<double>> out;
+    for (std::size_t k = 0; k < kPool; ++k) {
+      StewartPlatform<double> P;
+      for (int i = 0; i < 6; ++i) {
+        P.base[i] = Vec3<double>(u(g), u(g), 0.2 * u(g));
+        P.platform[i] = Vec3<double>(0.6 * u(g), 0.6 * u(g), 0.1 * u(g));
+      }
+      Vec6<double> xi;
+      xi << 0.3 * u(g), 0.3 * u(g), 0.3 * u(g), 0.2 * u(g), 0.2 * u(g), 1.0 + 0.2 * u(g);
+      P.legs = stewartLegLengths<double>(P, SE3Tangent<double>(xi).exp());
+      out.push_back(P);
+    }
+    return out;
+  }();
+  return platforms;
+}
+
+template <class S> void BM_stewart_homotopy(benchmark::State& st) {
+  std::vector<StewartPlatform<S>> ps;
+  for (const auto& p : pool()) {
+    StewartPlatform<S> q;
+    for (int i = 0; i < 6; ++i) {
+      q.base[i] = castMatrix<S>(p.base[i]);
+      q.platform[i] = castMatrix<S>(p.platform[i]);
+      q.legs[i] = scalarCast<S>(p.legs[i]);
+    }
+    ps.push_back(q);
+  }
+  (void)stewartStartSolutions<S>();  // the start system, once per process, outside the timing
+  std::size_t i = 0, calls = 0, complete = 0, real = 0, paths = 0;
+  for (auto _ : st) {
+    const auto sol = solveStewartForward<S>(ps[i]);
+    benchmark::DoNotOptimize(sol.postures.data());
+    complete += sol.complexCount() == 40;
+    real += sol.count();
+    paths += static_cast<std::size_t>(sol.paths_tracked);
+    ++calls;
+    i = (i + 1) % ps.size();
+  }
+  st.counters["complete(40)"] = double(complete) / double(calls);
+  st.counters["real/platform"] = double(real) / double(calls);
+  st.counters["paths/platform"] = double(paths) / double(calls);
+}
+BENCHMARK_TEMPLATE(BM_stewart_homotopy, double)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK_TEMPLATE(BM_stewart_homotopy, long double)->Unit(benchmark::kMillisecond)->Repetitions(3)->ReportAggregatesOnly(true);
+
+}  // namespace
+
+BENCHMARK_MAIN();

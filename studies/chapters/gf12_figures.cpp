@@ -1,0 +1,184 @@
+// Figures of GF chapter 12 (rendered with soma::render, double only): Fig. 12.2 (the four-beam wrist
+// force sensor with its eight gauge forces) and Fig. 12.4 (fingers on a rigid body: a seven-finger
+// push-only grasp of an ellipsoid with its contact normals, and three fingers with friction cones).
+#include "soma/geometry/statics/grasp.hpp"
+#include "soma/geometry/statics/wrist_sensor.hpp"
+#include "soma/render/render.hpp"
+#include "soma/studies/study.hpp"
+
+#include <cmath>
+#include <random>
+
+namespace soma::studies::gf12 {
+namespace {
+
+constexpr const char* kChapter = "GF 12 — Statics";
+namespace rd = soma::render;
+using V3 = Eigen::Vector3d;
+using V6 = Vec6<double>;
+using WS = WrenchSet<double>;
+using std::cos;
+using std::sin;
+
+void label(rd::Scene& s, const V3& at, const std::string& text, Eigen::Vector2d off = {8, -8}, double px = 24,
+           rd::Color col = rd::palette::black) {
+  rd::Label l;
+  l.at = at;
+  l.text = text;
+  l.offset = off;
+  l.pixelHeight = px;
+  l.c = col;
+  s.add(l);
+}
+void draw(Context& c, rd::Scene& scene, const V3& view, const std::string& file, const std::string& caption) {
+  rd::RenderOptions opt;
+  opt.width = 1200;
+  opt.height = 950;
+  rd::FitOptions fo;
+  fo.width = opt.width;
+  fo.height = opt.height;
+  opt.camera = rd::Camera::fit(scene, view, fo);
+  rd::renderPng(scene, opt, c.figurePath(file));
+  c.figure(file, caption);
+}
+
+// GF Fig. 12.2, GF-12-fig-12.2
+void fig122(Context& c) {
+  const double l = 1.0;
+  const auto gauges = wristSensorGauges<double>(l);
+  // the drawn geometry is the one whose wrenches sum to the corrected resolved force matrix
+  Vec8<double> w;
+  w << 1, 2, 3, 4, 5, 6, 7, 8;
+  Wrench<double> tot;
+  for (const auto& x : wristSensorWrenches<double>(l, w)) tot += x;
+  c.checkResidual("the drawn gauges reproduce the corrected resolved force matrix (w = 1…8)",
+                  (resolvedForceMatrix<double>(l) * w - tot.coeffs()).cwiseAbs().maxCoeff(), 1e-14);
+  if (!c.makeFigures()) return;
+  rd::Scene s;
+  s.title = "Fig. 12.2: the four-beam wrist force sensor — eight gauge forces w₁ … w₈";
+  s.axes = true;
+  s.axesLength = 0.45;
+  for (const V3& e : {V3(1, 0, 0), V3(0, 1, 0), V3(-1, 0, 0), V3(0, -1, 0)}) {
+    rd::Tube t;
+    t.p = {V3(0.18 * e), V3(l * e)};
+    t.radius = 0.05;
+    t.c = rd::palette::lightGrey.darker(0.15f);
+    s.add(t);
+  }
+  s.add(rd::sphere(V3::Zero(), 0.2, rd::palette::lightGrey.darker(0.3f)));
+  for (int i = 0; i < 8; ++i) {
+    const auto& gi = gauges[std::size_t(i)];
+    const V3 from = gi.point + 0.09 * gi.direction, to = gi.point + 0.5 * gi.direction;
+    const rd::Color col = gi.direction.z() > 0.5 ? rd::palette::blue : rd::palette::vermillion;
+    s.add(rd::Arrow{from, to, col, 0.022});
+    label(s, to, "w" + std::string(i == 0 ? "₁" : i == 1 ? "₂" : i == 2 ? "₃" : i == 3 ? "₄" : i == 4 ? "₅" : i == 5 ? "₆" : i == 6 ? "₇" : "₈"),
+          {8, -4}, 28, col);
+  }
+  label(s, V3(l, 0, 0), "(l, 0, 0)", {10, 22}, 20, rd::palette::darkGrey);
+  label(s, V3(0, l, 0), "(0, l, 0)", {10, 22}, 20, rd::palette::darkGrey);
+  draw(c, s, V3(-0.55, -1.0, -0.75), "GF-12-fig-12.2-wrist-sensor.png",
+       "The four-beam wrist force sensor of Fig. 12.2, read off the eight printed wrenches: beams of length l to (±l, 0, 0) "
+       "and (0, ±l, 0); in-plane gauge forces (vermillion) w₁, w₅ ∥ y, w₃, w₇ ∥ x, and vertical forces (blue) w₂, w₄, w₆, w₈. "
+       "Their wrenches sum to the corrected resolved force matrix (row 2 = (0, −l, 0, 0, 0, +l, 0, 0), erratum E12.1).");
+}
+
+V3 ellPoint(double a, double b, double cc, double th, double ph) {
+  return V3(a * cos(ph) * cos(th), b * cos(ph) * sin(th), cc * sin(ph));
+}
+
+// GF Fig. 12.4, GF-12-fig-12.4
+void fig124(Context& c) {
+  const double a = 1.5, b = 1.0, cc = 0.7;
+  auto g = std::mt19937_64(1240);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<V3> pts, nrm;
+  PositiveSpan<double> ps;
+  int tries = 0;
+  for (; tries < 50000; ++tries) {
+    pts.clear();
+    nrm.clear();
+    for (int i = 0; i < 7; ++i) {
+      const V3 x = ellPoint(a, b, cc, 3.14159 * u(g), 1.45 * u(g));
+      pts.push_back(x);
+      nrm.push_back(V3(-x.x() / (a * a), -x.y() / (b * b), -x.z() / (cc * cc)).normalized());
+    }
+    ps = positiveSpan<double>(contactNormalWrenches<double>(pts, nrm));
+    if (ps.spans && ps.margin > 0.02) break;  // a well-conditioned example for the picture
+  }
+  c.checkEqual("the drawn 7-finger grasp is force closed (positive span)", "yes", ps.spans ? "yes" : "no");
+  c.checkEqual("and form closed (dual LP)", "yes", formClosure<double>(contactNormalWrenches<double>(pts, nrm)).closed ? "yes" : "no");
+  // three fingers with friction on a sphere
+  const double mu = 0.5;
+  WS E(6, 24);
+  std::vector<V3> q3;
+  for (int i = 0; i < 3; ++i) {
+    const double th = 2 * pi<double>() * i / 3 + 0.3;
+    q3.push_back(V3(cos(th), sin(th), 0.15).normalized());
+    E.middleCols(8 * i, 8) = frictionConeEdges<double>(q3.back(), V3(-q3.back()), mu, 8);
+  }
+  c.checkEqual("the drawn three-finger friction grasp (μ = 0.5, 8-edge cones) is force closed", "yes",
+               positiveSpan<double>(E).spans ? "yes" : "no");
+  if (!c.makeFigures()) return;
+  {
+    rd::Scene s;
+    s.title = "Fig. 12.4: seven push-only fingers force-close an ellipsoid";
+    s.add(rd::parametricSurface([&](double th, double ph) { return ellPoint(a, b, cc, th, ph); }, {-pi<double>(), pi<double>()},
+                                {-pi<double>() / 2, pi<double>() / 2}, 64, 32, rd::palette::skyBlue.withAlpha(0.55f)));
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      s.add(rd::Arrow{V3(pts[i] - 0.75 * nrm[i]), pts[i], rd::palette::vermillion, 0.025});
+      rd::Polyline line;  // the normal line through the body
+      line.p = {pts[i], V3(pts[i] + 0.6 * nrm[i])};
+      line.c = rd::palette::darkGrey;
+      line.dashed = true;
+      line.width = 1.5;
+      s.add(line);
+      label(s, V3(pts[i] - 0.75 * nrm[i]), std::to_string(i + 1), {6, -6}, 26, rd::palette::vermillion);
+    }
+    s.add(rd::Points{pts, rd::palette::black, 0.035});
+    draw(c, s, V3(-0.7, -1.0, -0.6), "GF-12-fig-12.4-seven-fingers.png",
+         "Several fingers acting on a rigid body (Fig. 12.4): seven frictionless push-only fingers (arrows along the inward "
+         "contact normals, dashed: the normal lines continued) on the ellipsoid with semi-axes (1.5, 1, 0.7). The seven "
+         "normal wrenches positively span se*(3) (LP margin " + toString(ps.margin, 3) + "), so the grasp is force and form "
+         "closed; six fingers never are (GF-12.5-positive-grasp-seven).");
+  }
+  {
+    rd::Scene s;
+    s.title = "Three fingers with friction (μ = 0.5): friction cones and their 8-edge pyramids";
+    s.add(rd::sphere(V3::Zero(), 1.0, rd::palette::skyBlue.withAlpha(0.5f), 48, 24));
+    for (int i = 0; i < 3; ++i) {
+      const V3 p = q3[std::size_t(i)], n = -p;
+      // the cone of forces, drawn on the finger side: apex at p, opening outward along −f
+      V3 t1 = n.cross(V3::UnitZ()).normalized(), t2 = n.cross(t1);
+      const double h = 0.9;
+      s.add(rd::parametricSurface(
+          [&](double phi, double r) { return V3(p - r * h * (n + mu * (cos(phi) * t1 + sin(phi) * t2))); }, {0, 2 * pi<double>()},
+          {0, 1}, 48, 4, rd::palette::orange.withAlpha(0.35f)));
+      const WS Ei = frictionConeEdges<double>(p, n, mu, 8);
+      for (int j = 0; j < 8; ++j) {
+        const V3 f = V6(Ei.col(j)).tail<3>();
+        rd::Polyline e;
+        e.p = {p, V3(p - h * f)};
+        e.c = rd::palette::darkGrey;
+        e.width = 1.5;
+        s.add(e);
+      }
+      s.add(rd::Arrow{V3(p - 1.1 * n), V3(p - 0.02 * n), rd::palette::vermillion, 0.02});
+    }
+    s.add(rd::Points{q3, rd::palette::black, 0.035});
+    draw(c, s, V3(-0.5, -0.8, -0.9), "GF-12-fig-12.6-friction-cones.png",
+         "Three fingers on a unit sphere near its equator with Coulomb friction μ = 0.5: each friction cone (orange, semi-angle "
+         "atan μ, apex at the contact, drawn on the finger side) and its inscribed 8-edge pyramid (grey lines) used by the "
+         "linear program. The 24 edge wrenches positively span se*(3): the grasp is force closed; two such cones never are "
+         "(no torque about the line joining the contacts).");
+  }
+}
+
+}  // namespace
+
+#define GF12(ID, TITLE, SRC, FN) \
+  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
+GF12("GF-12-fig-12.2", "Fig. 12.2: the four-beam wrist force sensor", "GF §12.3", fig122);
+GF12("GF-12-fig-12.4", "Fig. 12.4: fingers on a rigid body — normals, and friction cones", "GF §12.5–12.6", fig124);
+#undef GF12
+
+}  // namespace soma::studies::gf12
