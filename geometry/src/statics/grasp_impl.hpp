@@ -181,8 +181,9 @@ template <class S> WrenchSet<S> planarFrictionConeEdges(const Vec2<S>& point, co
   if (!isFinite(mu) || mu < S(0)) throw InvalidInput("planarFrictionConeEdges: μ = " + toString(mu) + " is not a finite number ≥ 0");
   const Vec2<S> t(-normal.y(), normal.x());
   WrenchSet<S> W(3, 2);
-  W.col(0) = planarWrench<S>(point, Vec2<S>(normal + mu * t));
-  W.col(1) = planarWrench<S>(point, Vec2<S>(normal - mu * t));
+  const Vec3<S> w0 = planarWrench<S>(point, Vec2<S>(normal + mu * t)),
+                w1 = planarWrench<S>(point, Vec2<S>(normal - mu * t));
+  for (int i = 0; i < 3; ++i) W(i, 0) = w0(i), W(i, 1) = w1(i);  // element-wise: GCC 12 -Warray-bounds on Vec3<float>
   return W;
 }
 
