@@ -12,6 +12,7 @@
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/scalar.hpp"
 #include "soma/studies/planar_command.hpp"
+#include "soma/studies/cuspidal_command.hpp"
 #include "soma/studies/fk_command.hpp"
 #include "soma/studies/ik_command.hpp"
 #include "soma/studies/pose_command.hpp"
@@ -209,6 +210,14 @@ int main(int argc, char** argv) {
   addScalarOptions(ik, ikScalar);
   ik->add_flag("--json", ikJson, "print one JSON object");
 
+  // soma cuspidal (GF §5.2.3: cusp points, aspects, witness path)
+  std::string cuspRobot, cuspPng;
+  bool cuspJson = false;
+  auto* cusp = app.add_subcommand("cuspidal", "is a 3R arm cuspidal? cusp points, singular curves, aspects, a witness path");
+  cusp->add_option("robot", cuspRobot, "robot JSON with 3 revolute joints (DESIGN §6)")->required();
+  cusp->add_flag("--json", cuspJson, "print one JSON object");
+  cusp->add_option("--png", cuspPng, "joint-space figure (also STEM_section.png, STEM_witness.png)");
+
   // soma planar
   std::string planarFile, planarPng;
   bool planarJson = false;
@@ -249,6 +258,7 @@ int main(int argc, char** argv) {
     if (fk->parsed()) return fkCommand(fkRobot, fkJoints, applyScalar(fkScalar), fkJson, std::cout, fkTip);
     if (ik->parsed()) return ikCommand(ikRobot, ikPose, ikMethod, applyScalar(ikScalar), ikJson, std::cout, ikTip);
     if (planar->parsed()) return planarCommand(planarFile, planarJson, planarPng, std::cout);
+    if (cusp->parsed()) return cuspidalCommand(cuspRobot, cuspJson, cuspPng, std::cout);
     if (stewart->parsed())
       return stewartCommand(stewartFile, stewartMethod, applyScalar(stewartScalar), stewartJson, std::cout);
   } catch (const SelectionError& e) {

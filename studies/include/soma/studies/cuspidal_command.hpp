@@ -1,0 +1,43 @@
+#pragma once
+// `soma cuspidal ROBOT.json [--json] [--png FILE]` (DESIGN §6): is a 3R arm cuspidal? The cusp
+// points of its workspace section (algebraically, from the triple root of the IK equation), the
+// singular curves det J = 0 in (θ2, θ3) and their images in (ρ, z), the aspects, the verdict
+// (generic 3R: cuspidal ⇔ a cusp point exists — Salunkhe, Spartalis, Capco, Chablat, Wenger 2022),
+// and for a cuspidal arm a witness path planned with OMPL. --png FILE writes the joint-space
+// figure to FILE, the workspace section to FILE's stem + "_section.png" and the witness path to
+// stem + "_witness.png". Runs in double. Bad input → InvalidInput (the caller exits 2).
+#include "soma/geometry/cuspidal/cusps.hpp"
+#include "soma/geometry/cuspidal/singular_set.hpp"
+#include "soma/geometry/cuspidal/witness.hpp"
+
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace soma::studies {
+
+struct CuspidalReport {
+  CuspAnalysis<double> cusps;
+  DetJSeries dj;
+  std::vector<SingularBranch> branches;
+  std::vector<Eigen::Vector2d> reversals;  ///< second cusp count (tracing)
+  AspectMap aspectMap;
+  WitnessPath witness;
+  bool cuspidal = false;
+  double verdictSeconds = 0;  ///< findCusps alone
+  double seconds = 0;         ///< everything
+};
+
+/// The full analysis (tracing, aspects on an n × n grid, witness when cuspidal and `witness`).
+CuspidalReport analyseCuspidal(const SerialRobot<double>& robot, bool witness = true, int aspectGrid = 256);
+
+/// Figures: joint space (aspects coloured, singular curves, cusp postures), the workspace section
+/// (singular images and cusp points), the witness path in joint space.
+void plotJointSpace(const CuspidalReport& r, const std::string& title, const std::filesystem::path& png);
+void plotSection(const CuspidalReport& r, const std::string& title, const std::filesystem::path& png);
+void plotWitness(const CuspidalReport& r, const std::string& title, const std::filesystem::path& png);
+
+int cuspidalCommand(const std::filesystem::path& robot, bool json, const std::string& png, std::ostream& out);
+
+}  // namespace soma::studies
