@@ -180,6 +180,7 @@ void cuspidalPostureChange(Context& c) {
     plot.x.label = "ρ";
     plot.y.label = "z";
     plot.equalAspect = true;
+    plot.legend = render::LegendCorner::BottomLeft;
     bool first = true;
     for (const auto& b : r.branches) {
       std::vector<double> xs, ys;

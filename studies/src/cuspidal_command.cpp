@@ -101,6 +101,7 @@ void plotJointSpace(const CuspidalReport& r, const std::string& title, const std
   plot.y = angleAxis("θ3 (rad)");
   plot.equalAspect = true;
   plot.grid = false;
+  plot.legend = render::LegendCorner::BottomLeft;
   addAspectCells(plot, r);
   bool first = true;
   for (const auto& b : r.branches) {
@@ -130,6 +131,7 @@ void plotSection(const CuspidalReport& r, const std::string& title, const std::f
   plot.x.label = "ρ = √(x² + y²)";
   plot.y.label = "z";
   plot.equalAspect = true;
+  plot.legend = render::LegendCorner::BottomLeft;
   bool first = true;
   for (const auto& b : r.branches) {
     std::vector<double> xs, ys;
@@ -185,6 +187,7 @@ void plotWitness(const CuspidalReport& r, const std::string& title, const std::f
   plot.y = angleAxis("θ3 (rad)");
   plot.equalAspect = true;
   plot.grid = false;
+  plot.legend = render::LegendCorner::BottomLeft;
   addAspectCells(plot, r);
   bool first = true;
   for (const auto& b : r.branches) {
