@@ -2,8 +2,10 @@
 // constraint quadrics (sphereConstraintQuadric, the Study quadric) for random platforms as
 // polynomial systems, PHCpack's blackbox solver (Debian's phcpack, `phc -b -0`: fixed seed) tracks
 // every path of a total-degree homotopy, and the study counts the regular finite solutions:
-// tripod wrist 8, 6-3 platform 16, general 6-6 platform 40. Double precision (PHCpack's).
+// 6-3 platform 16, general 6-6 platform 40 (the tripod wrist, 8 and 6: GF-11.5.3-tripod-wrist-eight).
+// Double precision (PHCpack's).
 #include "soma/geometry/study/constraint_quadrics.hpp"
+#include "soma/geometry/study/intersection_ring.hpp"
 #include "soma/studies/study.hpp"
 
 #include <fmt/format.h>
@@ -137,7 +139,6 @@ void countsByPhcpack(Context& c) {
     int distinctTop;
   };
   const std::vector<Case> cases = {
-      {"tripod wrist (3 S–S legs + a ball joint at the origin)", "tripod", "GF-11.5.3-tripod-wrist-eight", 8, true, 3},
       {"6-3 Stewart platform (platform joints coincide in pairs)", "63", "GF-11.5.2-6-3-stewart-sixteen", 16, false, 3},
       {"general 6-6 Stewart platform", "66", "GF-11.5.4-stewart-forty", 40, false, 6}};
   for (const Case& k : cases) {
@@ -184,7 +185,7 @@ void countsByPhcpack(Context& c) {
       }
       // Distance to the generating pose in PR⁷: 1 − |⟨x, truth⟩|² / (|x|²|truth|²).
       const double cosine = std::norm(x.dot(truth.cast<std::complex<double>>())) / (x.squaredNorm() * truth.squaredNorm());
-      nearestPose = std::min(nearestPose, 1 - cosine);
+      nearestPose = std::min(nearestPose, std::max(0.0, 1 - cosine));  // rounding can make it −1e-16
     }
     c.note(fmt::format("{}: {} paths, PHCpack reports {} regular solutions, {:.1f} s (claim {}).", k.name, run.paths,
                        run.reportedRegular, run.seconds, k.claim));
@@ -195,12 +196,82 @@ void countsByPhcpack(Context& c) {
   }
 }
 
+// ---- GF-11.5.3-tripod-wrist-eight -------------------------------------------------------------
+// Three S–S legs: (2σ₅)³ = 8σ_A + 8σ_B. With a ball joint at the origin (the A-plane c = 0 of
+// rotations about it) 8 conformations; with the platform restricted to planar motions (the A-plane
+// SE(2)_z: a₁ = a₂ = c₀ = c₃ = 0) only 6 are finite, two lie at infinity (a = 0).
+void tripodWrist(Context& c) {
+  const StudyClass legs = (StudyClass::sigma5() * 2).pow(3);
+  c.checkEqual("ring: (2σ₅)³", "8σ_A + 8σ_B", legs.toString());
+  c.checkEqual("ring: (2σ₅)³ ∩ σ_A (the rotations about the ball joint)", 8, (legs * StudyClass::sigmaA()).degree());
+  auto g = rng(1153);
+  for (const bool planar : {false, true}) {
+    std::vector<Vec3<S>> base, top;
+    for (int i = 0; i < 3; ++i) {
+      base.push_back(vec3(g));
+      top.push_back(vec3(g));
+    }
+    // A real pose in the subgroup, so that a real conformation exists.
+    const double th = uni(g) * 3;
+    const SE3<S> pose = planar ? SE3<S>(SO3<S>::fromAxisAngle(Vec3<S>::UnitZ(), th), Vec3<S>(uni(g), uni(g), 0))
+                               : SE3<S>(SO3<S>::Random(g), Vec3<S>::Zero());
+    const std::vector<double> L = legLengths(pose, base, top);
+    // The coordinates of the A-plane in PR⁷ and their names.
+    const std::vector<int> idx = planar ? std::vector<int>{0, 3, 5, 6} : std::vector<int>{0, 1, 2, 3};
+    const std::vector<std::string> names = planar ? std::vector<std::string>{"a0", "a3", "c1", "c2"}
+                                                  : std::vector<std::string>{"a0", "a1", "a2", "a3"};
+    std::vector<Eigen::MatrixXd> restricted;
+    std::vector<std::string> eqs;
+    for (int i = 0; i < 3; ++i) {
+      const Mat8<S> Q = sphereConstraintQuadric<S>(base[i], top[i], L[i]);
+      Eigen::MatrixXd R(4, 4);
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b) R(a, b) = Q(idx[a], idx[b]);
+      restricted.push_back(R);
+      eqs.push_back(quadricPolynomial(R, names));
+    }
+    Eigen::VectorXd w(4);
+    for (int i = 0; i < 4; ++i) w(i) = uni(g);
+    eqs.push_back(linearPolynomial(w, names, 1.0));
+    const PhcRun run = runPhc(eqs, names, planar ? "tripod-planar" : "tripod");
+    int regular = 0, finite = 0;
+    double worst = 0, nearest = 1e300;
+    Eigen::VectorXd truth(4);
+    const Vec8<S> t8 = StudyParameters<S>::fromSE3(pose).coeffs();
+    for (int a = 0; a < 4; ++a) truth(a) = t8(idx[a]);
+    for (const PhcSolution& sol : run.solutions) {
+      if (!sol.regular) continue;
+      ++regular;
+      const Eigen::VectorXcd x = sol.x;
+      // a-part: (a0, a3) for the planar plane, all four for the ball joint.
+      const double aNorm = planar ? std::sqrt(std::norm(x(0)) + std::norm(x(1))) : x.norm();
+      if (!(aNorm > Tolerance<S>::sqrtEpsilon() * x.norm())) continue;
+      ++finite;
+      for (const auto& R : restricted)
+        worst = std::max(worst, std::abs((x.transpose() * R.cast<std::complex<double>>() * x)(0, 0)) / x.squaredNorm());
+      nearest = std::min(nearest, std::max(0.0, 1 - std::norm(x.dot(truth.cast<std::complex<double>>())) / (x.squaredNorm() * truth.squaredNorm())));
+    }
+    const std::string what = planar ? "planar platform (SE(2)_z)" : "ball joint at the origin";
+    c.note(fmt::format("{}: {} paths, {} regular, {} finite, {:.1f} s (PHCpack).", what, run.paths, regular, finite, run.seconds));
+    c.checkEqual(what + ": regular solutions (PHCpack)", 8, regular);
+    c.checkEqual(what + ": finite conformations (a ≠ 0)", planar ? 6 : 8, finite);
+    c.checkResidual(what + ": soma's leg quadrics vanish on them", worst, 1e-8);
+    c.checkResidual(what + ": the generating real pose is among them (1 − cos²)", nearest, 1e-10);
+  }
+}
+
 SOMA_STUDY({.id = "SOMA-11.5-phcpack-counts",
-            .title = "PHCpack confirms the §11.5 counts: tripod wrist 8, 6-3 platform 16, 6-6 platform 40",
+            .title = "PHCpack confirms the §11.5 counts on soma's quadrics: 6-3 platform 16, 6-6 platform 40",
             .source = "GF §11.5.2–11.5.4",
             .chapter = kChapter,
             .scalarGeneric = false,
             .run = countsByPhcpack});
+SOMA_STUDY({.id = "GF-11.5.3-tripod-wrist-eight",
+            .title = "Tripod wrist: 8 conformations; 6 finite when the platform moves in a plane",
+            .source = "GF §11.5.3",
+            .chapter = kChapter,
+            .scalarGeneric = false,
+            .run = tripodWrist});
 
 }  // namespace
 }  // namespace soma::studies::gf11phc

@@ -85,6 +85,59 @@ template <class S> SerialRobot<S> standardDH(const SerialRobot<S>& robot) {
   return dh;
 }
 
+/// When the algebraic answer may be short (the eigenproblem did not give 16 complex solutions, an
+/// odd real count, or the solver says so — e.g. a leading matrix singular at every θ3 offset, as
+/// for robots just outside the Pieper class), change strategy: a Ceres multi-start search in
+/// double, each posture Newton-polished in S and added when it is new. The count is then not
+/// certified, and the notes say so. GF §11.5 (16 complex postures)
+template <class S>
+void completeNumerically(const Robot6R<S>& rows, const SE3<S>& flange, const RobotFile<S>& rf, General6RSolution<S>& g) {
+  using std::abs;
+  using std::atan2;
+  using std::cos;
+  using std::sin;
+  bool mayBeShort = g.complex_count != 16 || g.count() % 2 == 1;
+  for (const auto& n : g.notes)
+    if (n.find("may be short") != std::string::npos) mayBeShort = true;
+  if (!mayBeShort) return;
+  Robot6R<double> rd;
+  for (int i = 0; i < 6; ++i) rd[i] = rows[i].template cast<double>();
+  const SE3<double> fd = flange.template cast<double>();
+  const auto t0 = std::chrono::steady_clock::now();
+  General6RNumericOptions opt;
+  opt.starts = 128;
+  const General6RSolution<double> gd = solveGeneral6RCeres(rd, fd, opt);
+  int added = 0;
+  for (const auto& qd : gd.postures) {
+    std::array<S, 6> q;
+    for (int i = 0; i < 6; ++i) q[i] = scalarCast<S>(qd(i));
+    q = polishGeneral6R<S>(rows, flange, q, General6ROptions{}.polish_iterations);
+    const S r = general6rResidual<S>(rows, flange, q);
+    if (!(r <= Tolerance<S>::sqrtEpsilon())) continue;
+    JointVector<S> v(6);
+    for (int i = 0; i < 6; ++i) v(i) = q[i];
+    v = rf.robot.wrap(v);
+    bool known = false;
+    for (const auto& p : g.postures) {
+      S gap(0);
+      for (int i = 0; i < 6; ++i) {
+        const S d = v(i) - p(i);
+        gap = std::max<S>(gap, abs(atan2(sin(d), cos(d))));
+      }
+      if (gap <= Tolerance<S>::input()) known = true;
+    }
+    if (known) continue;
+    g.postures.push_back(v);
+    g.residuals.push_back(r);
+    ++added;
+  }
+  g.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  g.notes.push_back("the eigenproblem answer may be short (" + std::to_string(g.complex_count) +
+                    " complex solutions): numerical completion by Ceres (128 starts in double, Newton in " +
+                    std::string(scalarName<S>()) + ") added " + std::to_string(added) +
+                    " posture(s); this count is not certified complete");
+}
+
 template <class S>
 Solution<S> general6R(const RobotFile<S>& rfIn, const SE3<S>& target, Numeric numeric) {
   const std::string name = numeric == Numeric::None ? "general6r" : numeric == Numeric::Ceres ? "ceres" : "nlopt";
@@ -103,6 +156,7 @@ Solution<S> general6R(const RobotFile<S>& rfIn, const SE3<S>& target, Numeric nu
     g = solveGeneral6R<S>(rows, flange);
     g.notes.push_back("complex solutions of the eigenproblem: " + std::to_string(g.complex_count) +
                       ", solved in " + g.solved_in);
+    completeNumerically<S>(rows, flange, rf, g);
   } else {
     Robot6R<double> rd;
     for (int i = 0; i < 6; ++i) rd[i] = rows[i].template cast<double>();
