@@ -33,14 +33,13 @@ template <class S> Quat<S> unitQuat(std::mt19937_64& g) {
   const Vec4<S> v = unit4<S>(g);
   return Quat<S>(v(0), v(1), v(2), v(3));
 }
-template <class S> Vec4<S> wxyz(const Quat<S>& q) { return Vec4<S>(q.w(), q.x(), q.y(), q.z()); }
 template <class S> S maxAbs4(const Mat4<S>& m) { return m.cwiseAbs().maxCoeff(); }
 template <class S> S tol(int ulps = 256) { return Tolerance<S>::identity(ulps); }
 
 /// The rotation q ↦ g1 q g2* of R⁴ = H (Study order w, x, y, z), from the left and right
 /// quaternion multiplication matrices of GF §9.3 — independent of the double-quaternion code.
 template <class S> Mat4<S> isoclinicPair(const Quat<S>& g1, const Quat<S>& g2) {
-  return quaternionLeftMatrix<S>(wxyz(g1)) * quaternionRightMatrix<S>(Vec4<S>(g2.w(), -g2.x(), -g2.y(), -g2.z()));
+  return quaternionLeftMatrix<S>(detail::studyOrder(g1)) * quaternionRightMatrix<S>(Vec4<S>(g2.w(), -g2.x(), -g2.y(), -g2.z()));
 }
 /// Reorder a map of R⁴ written in (x0 = w-part, x1, x2, x3) to the book's flag coordinates
 /// (x, y, z, w): the real axis of H is the w-axis of §11.1 (home flag e1 = w, e2 = x, e3 = y).
@@ -213,9 +212,9 @@ template <class S> void doubleQuaternions(Context& c) {
   const DoubleQuaternion<S> sigma(Quat<S>(S(0), S(0), S(0), S(0)), Quat<S>(S(1), S(0), S(0), S(0)));
   const DoubleQuaternion<S> q(unitQuat<S>(g), Quat<S>(S(0), S(0), S(0), S(0)));
   const DoubleQuaternion<S> ss = sigma * sigma;
-  c.checkResidual("σ² = 1", (wxyz(ss.h0()) - Vec4<S>::Unit(0)).norm() + wxyz(ss.h1()).norm(), S(0));
+  c.checkResidual("σ² = 1", (detail::studyOrder(ss.h0()) - Vec4<S>::Unit(0)).norm() + detail::studyOrder(ss.h1()).norm(), S(0));
   const DoubleQuaternion<S> sq = sigma * q, qs = q * sigma;
-  c.checkResidual("σ central: σq = qσ", (wxyz(sq.h1()) - wxyz(qs.h1())).norm() + (wxyz(sq.h0()) - wxyz(qs.h0())).norm(), S(0));
+  c.checkResidual("σ central: σq = qσ", (detail::studyOrder(sq.h1()) - detail::studyOrder(qs.h1())).norm() + (detail::studyOrder(sq.h0()) - detail::studyOrder(qs.h0())).norm(), S(0));
 }
 
 // ---- GF-11.1-spin4-conditions ---------------------------------------------------------------
@@ -232,7 +231,7 @@ template <class S> void spin4Conditions(Context& c) {
   c.checkResidual("h0h1* + h1h0* = 0", worstS, tol<S>(16));
   // The printed identity h0h1* + h1h0* = a·c: a random double quaternion gives 2 a·c (erratum 6).
   const DoubleQuaternion<S> r(unitQuat<S>(g), unitQuat<S>(g));
-  const Vec4<S> a = wxyz(r.h0()), cc = wxyz(r.h1());
+  const Vec4<S> a = detail::studyOrder(r.h0()), cc = detail::studyOrder(r.h1());
   const Quat<S> sum = detail::quatAdd(quaternionProduct(r.h0(), detail::quatConj(r.h1())),
                                       quaternionProduct(r.h1(), detail::quatConj(r.h0())));
   c.checkResidual("h0h1* + h1h0* = 2(a0c0 + a1c1 + a2c2 + a3c3) (a real quaternion)",
@@ -244,10 +243,10 @@ template <class S> void spin4Conditions(Context& c) {
   const Quat<S> g1 = unitQuat<S>(g);
   const DoubleQuaternion<S> same = DoubleQuaternion<S>::fromSpin3Pair(g1, g1);
   c.checkResidual("g1 = g2: h1 = 0 and the rotation fixes x0 (SO(3) ⊂ SO(4))",
-                  wxyz(same.h1()).norm() + (same.matrix().col(0) - Vec4<S>::Unit(0)).norm(), tol<S>(16));
+                  detail::studyOrder(same.h1()).norm() + (same.matrix().col(0) - Vec4<S>::Unit(0)).norm(), tol<S>(16));
   const DoubleQuaternion<S> opp = DoubleQuaternion<S>::fromSpin3Pair(g1, detail::quatScale(g1, S(-1)));
   c.checkResidual("g1 = −g2: h0 = 0 and x0 ↦ −x0 (the flags that are not somas)",
-                  wxyz(opp.h0()).norm() + (opp.matrix().col(0) + Vec4<S>::Unit(0)).norm(), tol<S>(16));
+                  detail::studyOrder(opp.h0()).norm() + (opp.matrix().col(0) + Vec4<S>::Unit(0)).norm(), tol<S>(16));
 }
 
 // ---- GF-11.1-spin3xspin3 --------------------------------------------------------------------
@@ -347,11 +346,11 @@ template <class S> void saletan(Context& c) {
   const S r = S(1000), s2 = S(1) / (r * r);
   const DoubleQuaternion<S> prod = DoubleQuaternion<S>(q, cq, s2) * DoubleQuaternion<S>(a2, d2, s2);
   const DualQuaternion<S> dq = DualQuaternion<S>(q, cq) * DualQuaternion<S>(a2, d2);
-  const S gap = (wxyz(prod.h0()) - detail::studyOrder(dq.real())).norm();
+  const S gap = (detail::studyOrder(prod.h0()) - detail::studyOrder(dq.real())).norm();
   c.checkNear("real part of the product − the dual-quaternion product = σ²|c d| (r = 1000)",
               s2 * sqrt(cq.coeffs().squaredNorm() * d2.coeffs().squaredNorm()), gap, tol<S>(1024) * s2 + tol<S>(64));
   c.checkResidual("σ part of the product = the dual part of the DQ product",
-                  (wxyz(prod.h1()) - detail::studyOrder(dq.dual())).norm(), tol<S>(64));
+                  (detail::studyOrder(prod.h1()) - detail::studyOrder(dq.dual())).norm(), tol<S>(64));
   c.checkResidual("Spin(4) norm h0h0* + σ²h1h1* − 1 → h0h0* − 1 = 0 (r = 1000)",
                   abs(DoubleQuaternion<S>(q, cq, s2).normDefect() - s2 * cq.coeffs().squaredNorm()), tol<S>(16));
 }
