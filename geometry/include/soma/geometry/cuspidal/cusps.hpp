@@ -66,6 +66,8 @@ template <class S> struct CuspAnalysis {
   S phase = S(0);                   ///< rotation of φ3 that keeps the roots away from t = ∞
   int candidates = 0;               ///< real (or near-real) roots of G
   double seconds = 0;
+  std::string scalar;               ///< the scalar the cusp points were computed in (findCuspsAdaptive)
+  std::string conditioning;         ///< why it escalated, empty when S sufficed
 };
 
 /// Every cusp point of the workspace section of a 3R arm (counted once in the half-plane ρ ≥ 0).
@@ -76,12 +78,40 @@ template <class S> CuspAnalysis<S> findCusps(const SerialRobot<S>& robot);
 /// makes all three vanish). Exposed for tests.
 template <class S> Vec3<S> ikFunction(const Arm3RFrame<S>& frame, const S& rho, const S& z, const S& phi3);
 
+/// Conditioning of the cusp polynomial in S (GF §5.2.3, near-degenerate arms). As b = (2a1/L)² → 0
+/// (axes 1, 2 about to meet) G → −a³W′⁶: its 12 roots gather in two clusters of six about the
+/// zeros of W′, and near each G ≈ −a³w⁶ − 2a³bEVw³ + b²a²E²(c1²W − V²) (w = W′), so a cluster
+/// splits only by w ~ b^{1/3}. Likewise a = s1² → 0 (axes 1, 2 about to be parallel) clusters the
+/// roots about the zeros of V′ with spread ~ a^{1/3}. Round-off of the coefficients blurs a six-fold
+/// cluster by ~eps^{1/6}, so S separates the cusps when b^{1/3} ≳ eps^{1/6}, i.e. min(a, b) ≳ √eps.
+/// `cuspClusterParameter` is min(a, b); `cuspsIllConditioned` is min(a, b) ≤ Tolerance<S>::sqrtEpsilon().
+/// Measured on the orthogonal arm (a1, 2, 1.5, 1, 0): double first loses cusps at min(a, b) ≈ 2.5e-11
+/// (a1 = 1e-5), float128 at 2.5e-19 (a1 = 1e-9): the threshold keeps a factor ≥ 100 in b in both.
+template <class S> S cuspClusterParameter(const Arm3RFrame<S>& frame);
+template <class S> bool cuspsIllConditioned(const Arm3RFrame<S>& frame);
+
+/// findCusps in double; when the double frame is ill-conditioned (cuspsIllConditioned), the same
+/// robot (its double parameters, exactly) is re-solved in __float128, and in mpfr at enough bits
+/// (√eps ≤ min(a, b)/2⁸) when __float128 is ill-conditioned too. `scalar` names the rung used,
+/// `conditioning` says why. The answer is in double.
+// GF §5.2.3, GF-5.2.3-cuspidal-posture-change (near-degenerate arms: finding in papers ch05)
+CuspAnalysis<double> findCuspsAdaptive(const SerialRobot<double>& robot);
+
+/// The limit of the cusp points of an arm as a1 → 0+ with everything else fixed (an orthogonal
+/// first pair, c1 = 0): at the two zeros φ* of W′ (W, V of the a1 = 0 arm), ρ = |V(φ*)|,
+/// z = z0 ± √(W(φ*) − V(φ*)²): the corners of the decoupled arm's section. From the local form of G
+/// above (T = aw³ + bEV = 0 has one real w per cluster; u² = U → W − V²). Empty unless c1 = 0 within
+/// Tolerance<double>::rank() and both W − V² > 0. Exposed for tests and studies.
+std::vector<Vec2<double>> cuspLimitA1Zero(const SerialRobot<double>& robot);
+
 #define SOMA_CUSPS_EXTERN(S)                                                                    \
   extern template Arm3RFrame<S> arm3RFrame<S>(const SerialRobot<S>&);                          \
   extern template Vec2<S> workspaceSection<S>(const Arm3RFrame<S>&, const SerialRobot<S>&,     \
                                               const JointVector<S>&);                          \
   extern template CuspAnalysis<S> findCusps<S>(const SerialRobot<S>&);                         \
-  extern template Vec3<S> ikFunction<S>(const Arm3RFrame<S>&, const S&, const S&, const S&);
+  extern template Vec3<S> ikFunction<S>(const Arm3RFrame<S>&, const S&, const S&, const S&);      \
+  extern template S cuspClusterParameter<S>(const Arm3RFrame<S>&);                             \
+  extern template bool cuspsIllConditioned<S>(const Arm3RFrame<S>&);
 SOMA_FOR_EACH_SCALAR(SOMA_CUSPS_EXTERN)
 #undef SOMA_CUSPS_EXTERN
 
