@@ -73,7 +73,8 @@ template <class S> RobotFile<S> parseRobot(const std::string& text, const std::s
   if (!j.is_object()) throw InvalidInput(origin + ": a robot must be a JSON object");
   for (const auto& [key, value] : j.items())
     if (key != "name" && key != "angles" && key != "convention" && key != "joints" && key != "base" &&
-        key != "tool" && key != "home" && key != "description")
+        key != "tool" && key != "home" && key != "description" &&
+        key != "links")  // "links": inertial data, read by soma::readLinkInertias (GF ch. 13)
       throw InvalidInput(origin + ": unknown field \"" + key + "\"");
   RobotFile<S> out;
   const std::string name = j.contains("name") && j["name"].is_string() ? j["name"].get<std::string>() : "";
