@@ -25,3 +25,6 @@ find_package(NLopt CONFIG REQUIRED HINTS /usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/
 # URDF import of serial chains (studies/src/urdf_file.cpp): urdfdom ships a CMake config in
 # /usr/lib/<arch>/urdfdom/cmake (targets urdfdom::urdfdom_model, which brings console_bridge).
 find_package(urdfdom CONFIG REQUIRED)
+# Parallel parameter-space maps of cuspidal 3R arms (geometry/src/cuspidal/parameter_map.cpp):
+# Debian's libtbb-dev (oneTBB 2021) ships TBBConfig.cmake with the target TBB::tbb.
+find_package(TBB REQUIRED)

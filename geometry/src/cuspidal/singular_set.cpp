@@ -249,6 +249,16 @@ std::vector<Eigen::Vector2d> imageReversals(const std::vector<SingularBranch>& b
       return Eigen::Vector2d(s(0) * s(0), s(1));
     };
     const std::size_t last = br.closed ? n : n - 2;
+    // A branch whose image is one point (a line θ3 = const along which the tool point sits on axis
+    // 2, so turning θ2 does not move it: orthogonal arms with r3 = 0 and a3 > a2) has no cusp; its
+    // chords are round-off, and their "reversals" are noise.
+    double extent = 0, size = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      extent = std::max(extent, (F(i) - F(0)).norm());
+      size = std::max(size, F(i).norm());
+    }
+    const double noise = Tolerance<double>::sqrtEpsilon() * (1 + size);
+    if (extent <= noise) continue;
     std::vector<double> gs = br.gradient;
     std::nth_element(gs.begin(), gs.begin() + gs.size() / 2, gs.end());
     const double median = gs[gs.size() / 2];

@@ -1,0 +1,68 @@
+// 6R witness search (GF §5.2.3): a known non-cuspidal robot (PUMA 560: det J factors, none found —
+// which is not a proof, and the answer says so) and a cuspidal one by construction (Wenger's
+// cuspidal orthogonal arm + a spherical wrist: a witness is found and re-checked here).
+#include "soma/geometry/cuspidal/witness6r.hpp"
+
+#include "soma/algebra/errors.hpp"
+#include "support/scalars.hpp"
+
+#include <cmath>
+
+using namespace soma;
+
+namespace {
+constexpr double kHalfPi = 1.57079632679489661923;
+SerialRobot<double> dh6(const std::array<std::array<double, 3>, 6>& rows) {
+  std::vector<DHRow<double>> r;
+  for (const auto& x : rows) {
+    DHRow<double> d;
+    d.a = x[0];
+    d.alpha = x[1];
+    d.d = x[2];
+    r.push_back(d);
+  }
+  return SerialRobot<double>::fromDH(r);
+}
+SerialRobot<double> puma() {
+  return dh6({{{0, kHalfPi, 0}, {0.4318, 0, 0}, {0.0203, -kHalfPi, 0.15005}, {0, kHalfPi, 0.4318}, {0, -kHalfPi, 0},
+               {0, 0, 0.05625}}});
+}
+SerialRobot<double> orthogonalWithWrist() {
+  return dh6({{{1, -kHalfPi, 0}, {2, kHalfPi, 1}, {1.5, 0, 0}, {0, -kHalfPi, 0}, {0, kHalfPi, 0}, {0, 0, 0.3}}});
+}
+}  // namespace
+
+TEST_CASE("6R witness: PUMA 560 (not cuspidal) — none found, not a proof", "[cuspidal][ompl][6r]") {
+  const Witness6R w = findWitness6R(puma(), 1, 0.1);
+  CHECK_FALSE(w.found);
+  CHECK(w.ikMethod == "pieper");
+  CHECK(w.posesTried == 1);
+  CHECK(w.posturesSeen == 8);
+  CHECK(w.pairsTried == 12);  // 8 postures, 4 of each sign of det J: 2 × C(4, 2)
+  CHECK(w.note.find("not a proof") != std::string::npos);
+}
+
+TEST_CASE("6R witness: orthogonal cuspidal arm + spherical wrist — found and re-checked", "[cuspidal][ompl][6r]") {
+  const SerialRobot<double> robot = orthogonalWithWrist();
+  const Witness6R w = findWitness6R(robot, 8, 0.5);
+  REQUIRE(w.found);
+  // Both ends reach the same pose and are different postures.
+  CHECK(poseResidual(robot.fk(w.start), w.pose, robot.lengthScale()) <= Tolerance<double>::sqrtEpsilon());
+  CHECK(poseResidual(robot.fk(w.goal), w.pose, robot.lengthScale()) <= Tolerance<double>::sqrtEpsilon());
+  double apart = 0;
+  for (int i = 0; i < 6; ++i) apart = std::max(apart, std::abs(std::remainder(w.start(i) - w.goal(i), 2 * 3.14159265358979)));
+  CHECK(apart > 0.1);
+  // det J keeps its sign along the path (independent re-check at the states and midpoints).
+  REQUIRE(w.path.size() >= 2);
+  for (std::size_t k = 0; k < w.path.size(); ++k) CHECK(w.sign * jacobianDet6(robot, w.path[k]) > 0);
+  CHECK(w.minSignedDet > 0);
+  CHECK(w.sign * jacobianDet6(robot, w.start) > 0);
+  CHECK(w.sign * jacobianDet6(robot, w.goal) > 0);
+}
+
+TEST_CASE("6R witness: bad input", "[cuspidal][6r]") {
+  DHRow<double> r;
+  r.a = 1;
+  CHECK_THROWS_WITH(findWitness6R(SerialRobot<double>::fromDH({r, r, r, r})), Catch::Contains("has 4 joints"));
+  CHECK_THROWS_WITH(findWitness6R(puma(), 0), Catch::Contains("at least 1"));
+}
