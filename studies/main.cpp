@@ -7,6 +7,8 @@
 //   soma ik ROBOT.json|ROBOT.urdf [--tip LINK] --pose POSE.json [--method M] [--scalar T] [--json]
 //   soma planar SCENE.json [--json] [--png FILE]
 //   soma stewart PLATFORM.json [--method M] [--scalar T] [--json]
+//   soma cuspidal ROBOT.json [--json] [--png FILE] [--map X:MIN:MAX:N,Y:MIN:MAX:N [--threads N]]
+//   soma workspace ROBOT.json [--samples N] [--grid N] [--png FILE] [--from Q --to Q [--margin M]] [--json]
 // Exit codes: 0 every check passed, 1 a check or study failed, 2 bad input (usage, unknown
 // study or scalar, unwritable output).
 #include "soma/algebra/errors.hpp"
@@ -19,6 +21,7 @@
 #include "soma/studies/report.hpp"
 #include "soma/studies/runner.hpp"
 #include "soma/studies/stewart_command.hpp"
+#include "soma/studies/workspace_command.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -213,10 +216,34 @@ int main(int argc, char** argv) {
   // soma cuspidal (GF §5.2.3: cusp points, aspects, witness path)
   std::string cuspRobot, cuspPng;
   bool cuspJson = false;
-  auto* cusp = app.add_subcommand("cuspidal", "is a 3R arm cuspidal? cusp points, singular curves, aspects, a witness path");
-  cusp->add_option("robot", cuspRobot, "robot JSON with 3 revolute joints (DESIGN §6)")->required();
+  auto* cusp = app.add_subcommand("cuspidal", "is a 3R arm cuspidal? cusp points, singular curves, aspects, a witness path (6R: a witness search)");
+  cusp->add_option("robot", cuspRobot, "robot JSON with 3 (or 6) revolute joints (DESIGN §6)")->required();
   cusp->add_flag("--json", cuspJson, "print one JSON object");
   cusp->add_option("--png", cuspPng, "joint-space figure (also STEM_section.png, STEM_witness.png)");
+  std::string cuspMap;
+  int cuspThreads = 0;
+  cusp->add_option("--map", cuspMap, "cusp-count map over two DH lengths of the robot: X,Y with each NAME:MIN:MAX:N "
+                                     "(NAME a1..a3, d1..d3), e.g. a2:0.5:4:100,a3:0.2:3:100");
+  cusp->add_option("--threads", cuspThreads, "--map: TBB threads (default: all cores)");
+  int cuspPoses = 4;
+  double cuspPairSeconds = 0.5;
+  cusp->add_option("--poses", cuspPoses, "6R: random poses to try (fixed seed)")->capture_default_str();
+  cusp->add_option("--pair-seconds", cuspPairSeconds, "6R: OMPL time per same-sign posture pair")->capture_default_str();
+
+  // soma workspace (issue 9: OMPL reachability / dexterity maps, singularity-avoiding plans)
+  std::string wsRobot;
+  WorkspaceOptions wsOpt;
+  auto* ws = app.add_subcommand("workspace", "reachability and dexterity maps from OMPL samples, the singular "
+                                             "boundary, a plan keeping away from singularities");
+  ws->add_option("robot", wsRobot, "robot JSON (DESIGN §6)")->required();
+  ws->add_option("--samples", wsOpt.samples, "postures sampled within the joint limits")->capture_default_str();
+  ws->add_option("--grid", wsOpt.grid, "cells per side of the (ρ, z) maps")->capture_default_str();
+  ws->add_option("--png", wsOpt.png, "reachability map (also STEM_dexterity.png, STEM_path.png)");
+  ws->add_option("--from", wsOpt.from, "start posture q1,q2,... (the robot's angle unit)");
+  ws->add_option("--to", wsOpt.to, "goal posture q1,q2,...");
+  ws->add_option("--margin", wsOpt.margin, "minimum σmin along the plan (dimensionless)")->capture_default_str();
+  ws->add_option("--seconds", wsOpt.seconds, "planning time limit")->capture_default_str();
+  ws->add_flag("--json", wsOpt.json, "print one JSON object");
 
   // soma planar
   std::string planarFile, planarPng;
@@ -258,7 +285,10 @@ int main(int argc, char** argv) {
     if (fk->parsed()) return fkCommand(fkRobot, fkJoints, applyScalar(fkScalar), fkJson, std::cout, fkTip);
     if (ik->parsed()) return ikCommand(ikRobot, ikPose, ikMethod, applyScalar(ikScalar), ikJson, std::cout, ikTip);
     if (planar->parsed()) return planarCommand(planarFile, planarJson, planarPng, std::cout);
-    if (cusp->parsed()) return cuspidalCommand(cuspRobot, cuspJson, cuspPng, std::cout);
+    if (ws->parsed()) return workspaceCommand(wsRobot, wsOpt, std::cout);
+    if (cusp->parsed() && !cuspMap.empty())
+      return cuspidalMapCommand(cuspRobot, cuspMap, cuspThreads, cuspJson, cuspPng, std::cout);
+    if (cusp->parsed()) return cuspidalCommand(cuspRobot, cuspJson, cuspPng, std::cout, cuspPoses, cuspPairSeconds);
     if (stewart->parsed())
       return stewartCommand(stewartFile, stewartMethod, applyScalar(stewartScalar), stewartJson, std::cout);
   } catch (const SelectionError& e) {

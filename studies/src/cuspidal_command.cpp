@@ -1,11 +1,14 @@
 #include "soma/studies/cuspidal_command.hpp"
 
+#include "soma/algebra/errors.hpp"
+#include "soma/geometry/cuspidal/witness6r.hpp"
 #include "soma/render/plot.hpp"
 #include "soma/studies/robot_file.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -82,7 +85,7 @@ std::string fmtNum(double v) { return fmt::format("{:.6g}", v); }
 CuspidalReport analyseCuspidal(const SerialRobot<double>& robot, bool witness, int aspectGrid) {
   const auto t0 = std::chrono::steady_clock::now();
   CuspidalReport r;
-  r.cusps = findCusps(robot);
+  r.cusps = findCuspsAdaptive(robot);
   r.verdictSeconds = r.cusps.seconds;
   r.cuspidal = !r.cusps.cusps.empty();
   r.dj = detJSeries(robot);
@@ -221,9 +224,172 @@ void plotWitness(const CuspidalReport& r, const std::string& title, const std::f
   render::renderPlotPng(plot, png, 1100, 1000);
 }
 
-int cuspidalCommand(const std::filesystem::path& file, bool json, const std::string& png, std::ostream& out) {
+render::Color cuspCountColor(int count) {
+  // 0 cusps light grey, then the colour map by count (2, 4, 6, ... → increasingly yellow).
+  if (count <= 0) return render::Color::hex(0xDDDDDD);
+  return render::colorMap(std::min(1.0, 0.15 + 0.85 * (count - 1) / 7.0));
+}
+
+void plotCuspMap(const CuspMap& m, const std::string& title, const std::filesystem::path& png,
+                 const std::vector<MapCheckPoint>& checks) {
+  render::Plot plot;
+  plot.title = title;
+  plot.x.label = m.x.name;
+  plot.y.label = m.y.name;
+  plot.grid = false;
+  plot.legend = render::LegendCorner::TopRight;
+  const double hx = (m.x.max - m.x.min) / (m.x.n - 1) / 2, hy = (m.y.max - m.y.min) / (m.y.n - 1) / 2;
+  render::PlotCells cells;
+  cells.x0 = m.x.min - hx;
+  cells.x1 = m.x.max + hx;
+  cells.y0 = m.y.min - hy;
+  cells.y1 = m.y.max + hy;
+  cells.nx = m.x.n;
+  cells.ny = m.y.n;
+  int maxCount = 0;
+  for (int c : m.counts) maxCount = std::max(maxCount, c);
+  std::vector<int> seen(std::size_t(maxCount) + 1, 0);
+  for (int c : m.counts) {
+    cells.cells.push_back(cuspCountColor(c));
+    ++seen[std::size_t(c)];
+  }
+  plot.cells.push_back(cells);
+  plot.x.min = cells.x0;
+  plot.x.max = cells.x1;
+  plot.y.min = cells.y0;
+  plot.y.max = cells.y1;
+  for (int c = 0; c <= maxCount; ++c)
+    if (seen[std::size_t(c)] > 0)
+      plot.legendSwatches.emplace_back(fmt::format("{} cusp{} ({} arms)", c, c == 1 ? "" : "s", seen[std::size_t(c)]),
+                                       cuspCountColor(c));
+  if (!checks.empty()) {
+    std::vector<double> ax, ay, bx, by;
+    for (const auto& k : checks) {
+      (k.algebraic == k.traced ? ax : bx).push_back(k.x);
+      (k.algebraic == k.traced ? ay : by).push_back(k.y);
+      render::PlotText t;
+      t.x = k.x;
+      t.y = k.y;
+      t.text = std::to_string(k.traced);
+      t.pixelHeight = 22;
+      plot.texts.push_back(t);
+    }
+    if (!ax.empty()) {
+      auto& s = plot.add("traced count agrees", ax, ay, render::palette::black);
+      s.line = false;
+      s.markers = true;
+      s.markerRadius = 6;
+    }
+    if (!bx.empty()) {
+      auto& s = plot.add("traced count differs", bx, by, render::palette::vermillion);
+      s.line = false;
+      s.markers = true;
+      s.markerRadius = 8;
+    }
+  }
+  render::renderPlotPng(plot, png, 1100, 950);
+}
+
+int cuspidalMapCommand(const std::filesystem::path& file, const std::string& map, int threads, bool json,
+                       const std::string& png, std::ostream& out) {
+  const std::size_t comma = map.find(',');
+  if (comma == std::string::npos)
+    throw InvalidInput("--map '" + map + "': expected two axes X,Y, e.g. a2:0.5:4:100,a3:0.2:3:100");
+  const ParameterAxis x = parseParameterAxis(map.substr(0, comma)), y = parseParameterAxis(map.substr(comma + 1));
+  const RobotFile<double> rf = readRobot<double>(file);
+  const CuspMap m = cuspMap(rf.robot, x, y, threads);
+  int maxCount = 0;
+  for (int c : m.counts) maxCount = std::max(maxCount, c);
+  std::vector<int> hist(std::size_t(maxCount) + 1, 0);
+  for (int c : m.counts) ++hist[std::size_t(c)];
+  const std::string name = rf.robot.name().empty() ? file.stem().string() : rf.robot.name();
+  if (!png.empty())
+    plotCuspMap(m, fmt::format("{}: number of cusp points over ({}, {})", name, x.name, y.name), png);
+  if (json) {
+    nlohmann::json j;
+    j["robot"] = file.string();
+    j["name"] = rf.robot.name();
+    j["x"] = {{"name", x.name}, {"min", x.min}, {"max", x.max}, {"n", x.n}};
+    j["y"] = {{"name", y.name}, {"min", y.min}, {"max", y.max}, {"n", y.n}};
+    j["counts"] = m.counts;
+    nlohmann::json h = nlohmann::json::object();
+    for (std::size_t c = 0; c < hist.size(); ++c)
+      if (hist[c] > 0) h[std::to_string(c)] = hist[c];
+    j["histogram"] = h;
+    j["escalated"] = m.escalated;
+    j["decoupled"] = m.decoupled;
+    j["threads"] = m.threads;
+    j["seconds"] = m.seconds;
+    out << j.dump(2) << "\n";
+    return 0;
+  }
+  out << fmt::format("robot: {} (3R arm), map over {} ∈ [{}, {}] ({} values) × {} ∈ [{}, {}] ({} values)\n", name,
+                     x.name, fmtNum(x.min), fmtNum(x.max), x.n, y.name, fmtNum(y.min), fmtNum(y.max), y.n);
+  for (std::size_t c = 0; c < hist.size(); ++c)
+    if (hist[c] > 0) out << fmt::format("  {} cusps: {} arms\n", c, hist[c]);
+  out << fmt::format("decoupled arms (IK splits into quadratics): {}; re-solved in float128/mpfr: {}\n", m.decoupled,
+                     m.escalated);
+  out << fmt::format("{} arms in {:.3f} s on {} thread(s) (TBB)\n", m.counts.size(), m.seconds, m.threads);
+  return 0;
+}
+
+int cuspidal6RCommand(const RobotFile<double>& rf, const std::filesystem::path& file, int poses, double secondsPerPair,
+                      bool json, std::ostream& out) {
+  const SerialRobot<double>& robot = rf.robot;
+  const Witness6R w = findWitness6R(robot, poses, secondsPerPair);
+  const double unit = rf.degrees ? 180.0 / kPi : 1.0;
+  auto jointsOut = [&](const JointVector<double>& q) {
+    std::vector<double> v;
+    for (int i = 0; i < q.size(); ++i) v.push_back(q(i) * unit);
+    return v;
+  };
+  if (json) {
+    nlohmann::json j;
+    j["robot"] = file.string();
+    j["name"] = robot.name();
+    j["method"] = "6R witness search: random poses (seed 20261130), all IK postures, OMPL RRTConnect between same-sign pairs";
+    j["ik_method"] = w.ikMethod;
+    j["poses_tried"] = w.posesTried;
+    j["pairs_tried"] = w.pairsTried;
+    j["postures_seen"] = w.posturesSeen;
+    j["witness_found"] = w.found;
+    j["cuspidal"] = w.found ? nlohmann::json(true) : nlohmann::json("unknown");
+    if (w.found) {
+      j["start"] = jointsOut(w.start);
+      j["goal"] = jointsOut(w.goal);
+      j["det_sign"] = w.sign;
+      j["margin"] = w.margin;
+      j["min_signed_det"] = w.minSignedDet;
+      nlohmann::json path = nlohmann::json::array();
+      for (const auto& q : w.path) path.push_back(jointsOut(q));
+      j["path"] = path;
+    } else {
+      j["note"] = w.note;
+    }
+    j["seconds"] = w.seconds;
+    out << j.dump(2) << "\n";
+    return 0;
+  }
+  out << fmt::format("robot: {} (6R, IK by {})\n", robot.name().empty() ? file.string() : robot.name(), w.ikMethod);
+  out << fmt::format("poses tried: {}, postures {}, same-sign pairs planned: {} ({:.2f} s)\n", w.posesTried,
+                     w.posturesSeen, w.pairsTried, w.seconds);
+  if (w.found) {
+    out << fmt::format("witness found: two postures of one pose joined by a path of {} states along which det J {} 0 "
+                       "(min sign·det J / L³ = {} over a dense check)\n",
+                       w.path.size(), w.sign > 0 ? ">" : "<", fmtNum(w.minSignedDet));
+    out << "verdict: CUSPIDAL (witness)\n";
+  } else {
+    out << "witness: " << w.note << "\n";
+    out << "verdict: unknown (no witness; not a proof of non-cuspidality)\n";
+  }
+  return 0;
+}
+
+int cuspidalCommand(const std::filesystem::path& file, bool json, const std::string& png, std::ostream& out,
+                    int poses, double secondsPerPair) {
   const RobotFile<double> rf = readRobot<double>(file);
   const SerialRobot<double>& robot = rf.robot;
+  if (robot.dof() == 6) return cuspidal6RCommand(rf, file, poses, secondsPerPair, json, out);
   const CuspidalReport r = analyseCuspidal(robot);
   const Arm3RFrame<double>& f = r.cusps.frame;
   const WitnessPath& w = r.witness;
@@ -240,7 +406,8 @@ int cuspidalCommand(const std::filesystem::path& file, bool json, const std::str
     j["robot"] = file.string();
     j["name"] = robot.name();
     j["method"] = "triple root of the IK equation (degree-12 cusp polynomial)";
-    j["scalar"] = "double";
+    j["scalar"] = r.cusps.scalar;
+    if (!r.cusps.conditioning.empty()) j["conditioning"] = r.cusps.conditioning;
     j["seconds"] = r.seconds;
     j["verdict_seconds"] = r.verdictSeconds;
     j["cuspidal"] = r.cuspidal;
@@ -292,7 +459,9 @@ int cuspidalCommand(const std::filesystem::path& file, bool json, const std::str
   out << fmt::format("axes 1–2: common normal {}  twist sin {} cos {}\n", fmtNum(f.a1), fmtNum(f.s1), fmtNum(f.c1));
   if (f.decoupled)
     out << fmt::format("the IK equation splits into quadratics ({}): no cusp point\n", f.reason);
-  out << fmt::format("cusp points (algebraic, triple root of the IK equation): {}\n", r.cusps.cusps.size());
+  if (!r.cusps.conditioning.empty()) out << "near-degenerate: " << r.cusps.conditioning << "\n";
+  out << fmt::format("cusp points (algebraic, triple root of the IK equation, in {}): {}\n", r.cusps.scalar,
+                     r.cusps.cusps.size());
   for (const auto& c : r.cusps.cusps)
     out << fmt::format("  ρ = {:>12}  z = {:>12}   posture ({}, {}, {})\n", fmtNum(c.rho), fmtNum(c.z),
                        fmtNum(c.posture(0)), fmtNum(c.posture(1)), fmtNum(c.posture(2)));
