@@ -3,7 +3,10 @@
 // continuation, a witness path planned with OMPL, and the bifurcation claim (at det J = 0 two
 // roots of the IK equation coalesce).
 #include "soma/geometry/serial/closed_form_ik.hpp"
+#include "soma/geometry/cuspidal/witness6r.hpp"
 #include "soma/render/plot.hpp"
+#include "soma/render/render.hpp"
+#include "soma/studies/workspace_command.hpp"
 #include "soma/studies/cuspidal_command.hpp"
 #include "soma/studies/study.hpp"
 
@@ -32,6 +35,9 @@ SerialRobot<S> dhArm(double a1, double d2, double a2, double a3, double d3, cons
                                 DHConvention::Standard, SE3<S>(), SE3<S>(), name);
 }
 
+/// Verheye's orthogonal arm a = (1, 1.5, 1), d2 = 0.7.
+SerialRobot<S> test3R() { return dhArm(1, 0.7, 1.5, 1, 0, "orthogonal 3R (Verheye)"); }
+
 /// Orthogonal arm (d2, d3, d4, r2, r3) = (1, 2, 1.5, 1, 0) in Wenger's notation.
 SerialRobot<S> wengerArm() { return dhArm(1, 1, 2, 1.5, 0, "orthogonal 3R (1, 2, 1.5, 1, 0)"); }
 
@@ -47,6 +53,63 @@ double wrappedDistance(const JointVector<S>& a, const JointVector<S>& b) {
   double d = 0;
   for (int i = 0; i < a.size(); ++i) d = std::max(d, std::abs(std::remainder(a(i) - b(i), 2 * kPi)));
   return d;
+}
+
+/// The robot drawn as tubes through its DH frame origins (and tool point) at a few postures of a
+/// path: start (green) and goal (purple) solid, ghosts in between light and translucent, the tool
+/// point's trace in black. GF §5.2.3 (a witness path as the robot moving).
+void renderRobotPath(const SerialRobot<S>& robot, const std::vector<JointVector<S>>& path, int ghosts,
+                     const std::string& title, const std::filesystem::path& png, const Eigen::Vector3d& viewDir) {
+  namespace rd = soma::render;
+  rd::Scene scene;
+  scene.title = title;
+  const double L = robot.lengthScale();
+  auto chain = [&](const JointVector<S>& q) {
+    std::vector<Eigen::Vector3d> pts;
+    pts.push_back(robot.base().translation());
+    for (const auto& f : robot.frames(q)) {
+      const Eigen::Vector3d p = f.translation();
+      if ((p - pts.back()).norm() > 1e-9 * L) pts.push_back(p);
+    }
+    const Eigen::Vector3d tool = robot.fk(q).translation();
+    if ((tool - pts.back()).norm() > 1e-9 * L) pts.push_back(tool);
+    return pts;
+  };
+  auto draw = [&](const JointVector<S>& q, rd::Color c, double radius) {
+    rd::Tube t;
+    t.p = chain(q);
+    t.radius = radius;
+    t.c = c;
+    scene.add(t);
+    rd::Points j;
+    j.p = t.p;
+    j.radius = 1.5 * radius;
+    j.c = c;
+    scene.add(j);
+  };
+  const std::size_t n = path.size();
+  for (int g = 1; g <= ghosts; ++g) {
+    const std::size_t k = std::min(n - 1, std::size_t(double(g) / double(ghosts + 1) * double(n - 1)));
+    draw(path[k], rd::Color::hex(0x9AA5B1, 0.35f), 0.006 * L);
+  }
+  draw(path.front(), rd::palette::bluishGreen, 0.009 * L);
+  draw(path.back(), rd::palette::reddishPurple, 0.009 * L);
+  rd::Polyline trace;
+  for (std::size_t k = 0; k + 1 < n; ++k)
+    for (int t = 0; t < 8; ++t) trace.p.push_back(robot.fk(JointVector<S>(path[k] + (path[k + 1] - path[k]) * (t / 8.0))).translation());
+  trace.p.push_back(robot.fk(path.back()).translation());
+  trace.width = 3;
+  scene.add(trace);
+  rd::Points base;
+  base.p = {robot.base().translation()};
+  base.radius = 0.02 * L;
+  base.c = rd::palette::black;
+  scene.add(base);
+  rd::RenderOptions opt;
+  opt.width = 1200;
+  opt.height = 1000;
+  opt.camera = rd::Camera::fit(scene, viewDir, {opt.width, opt.height});
+  rd::renderPng(scene, opt, png);
 }
 
 // GF §5.2.3, GF-5.2.3-cuspidal-posture-change: cusp points by the triple-root condition and by
@@ -173,6 +236,13 @@ void cuspidalPostureChange(Context& c) {
       plotWitness(r, "A posture change without singularity (OMPL RRTConnect)", c.figurePath("gf05_cusp_witness.png"));
       c.figure("gf05_cusp_witness.png",
                "The witness: two postures of one point joined inside one aspect; det J keeps its sign.");
+      std::vector<JointVector<S>> path;
+      for (const auto& x : w.path) path.push_back(JointVector<S>(x));
+      renderRobotPath(robot, path, 5, "The witness as the arm moving: same tool point, another posture, det J ≠ 0",
+                      c.figurePath("gf05_cusp_witness_robot.png"), Eigen::Vector3d(-0.35, -1.0, -0.3));
+      c.figure("gf05_cusp_witness_robot.png",
+               "The witness path as the arm moving: start posture (green), goal posture (purple) at the same tool "
+               "point, five translucent ghosts in between, the tool point's trace (black); det J keeps its sign.");
     }
     // Fig. 5.2: the circle about the cusp and the lifted posture path.
     render::Plot plot;
@@ -250,12 +320,144 @@ void bifurcation(Context& c) {
   c.note(fmt::format("smallest |f′|/L⁴ at the regular configurations: {:.3g}", regularMin));
 }
 
+// Parameter-space map of orthogonal 3R arms (Baili, Wenger, Chablat 2004): cusp counts over
+// (a2, a3) = (d3, d4) in Wenger's notation with d2 = 1, r2 = 1, r3 = 0, in parallel (TBB), and
+// the traced second method at sample points of every region.
+void cuspMapStudy(Context& c) {
+  const SerialRobot<S> base = wengerArm();
+  const ParameterAxis x = parseParameterAxis("a2:0.2:4:100"), y = parseParameterAxis("a3:0.2:3:100");
+  const CuspMap m = cuspMap(base, x, y, 2);
+  std::vector<int> hist(32, 0);
+  for (int k : m.counts) ++hist[std::size_t(std::min(k, 31))];
+  c.checkEqual("every arm classified (100 × 100)", 10000, (long long)m.counts.size());
+  c.checkEqual("the literature arm (1, 2, 1.5, 1, 0): 4 cusps", 4,
+               (long long)findCuspsAdaptive(mapArm(base, x, 2.0, y, 1.5)).cusps.size());
+  c.note(fmt::format("counts: 0 cusps {} arms, 2 cusps {}, 4 cusps {}, other {} (arms on a boundary where two cusps merge); "
+                     "{} escalated to float128/mpfr; {:.2f} s on {} TBB threads",
+                     hist[0], hist[2], hist[4], 10000 - hist[0] - hist[2] - hist[4], m.escalated, m.seconds, m.threads));
+  // Second method at a 4 × 4 grid of sample arms.
+  std::vector<MapCheckPoint> checks;
+  int agree = 0;
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) {
+      const int i = 6 + a * 29, j = 6 + b * 29;
+      const SerialRobot<S> arm = mapArm(base, x, x.value(i), y, y.value(j));
+      const auto rev = imageReversals(traceSingularCurves(arm, detJSeries(arm)));
+      MapCheckPoint k{x.value(i), y.value(j), m.count(i, j), int(rev.size())};
+      agree += k.algebraic == k.traced;
+      checks.push_back(k);
+    }
+  c.checkEqual("traced count (image reversals) = map count at 16 sample arms", 16, agree);
+  if (c.makeFigures()) {
+    plotCuspMap(m, "Cusp points of orthogonal 3R arms over (a2, a3) = (d3, d4)", c.figurePath("gf05_cusp_map.png"), checks);
+    c.figure("gf05_cusp_map.png",
+             "Number of cusp points of the orthogonal arms (d2, d3, d4, r2, r3) = (1, a2, a3, 1, 0), 100 × 100 arms "
+             "(algebraic, TBB); the numbers are the traced count at 16 sample arms (black dots: it agrees).");
+  }
+}
+
+// Workspace probing with OMPL: reachability and dexterity from the state sampler, the boundary
+// from the singular curves, a plan that keeps σmin ≥ margin between the witness postures.
+void workspaceStudy(Context& c) {
+  const SerialRobot<S> robot = test3R();
+  const WorkspaceMaps m = sampleWorkspace(robot, 200000, 120);
+  const auto boundary = singularImages(robot);
+  double singularMax = 0, sampledMax = 0;
+  for (const auto& b : boundary)
+    for (const auto& p : b) singularMax = std::max(singularMax, p.norm());
+  for (const auto& p : m.points) sampledMax = std::max(sampledMax, p.norm());
+  c.checkEqual("farthest sampled reach ≤ farthest point of the singular images (the outer boundary is singular)", 1,
+               sampledMax <= singularMax * (1 + Tolerance<S>::sqrtEpsilon()));
+  c.checkResidual("… and the samples come within 1 % of it", std::max(0.0, 1 - sampledMax / singularMax), 0.01);
+  c.note(fmt::format("{} OMPL samples in {:.2f} s; {:.1f} % of the bounding grid reached; mean σmin/σmax {:.3f}", m.samples,
+                     m.seconds, 100 * m.reachedFraction, m.meanDexterity));
+  const CuspidalReport r = analyseCuspidal(robot);
+  SafePath plan;
+  if (r.witness.found) {
+    const double margin = 0.5 * std::min(dexteritySingularValues(robot, r.witness.start)(0),
+                                         dexteritySingularValues(robot, r.witness.goal)(0));
+    plan = planAwayFromSingularities(robot, r.witness.start, r.witness.goal, margin, 3.0);
+    c.checkEqual("a plan between the witness postures keeping σmin ≥ ½ min(σmin at the ends)", 1, plan.found);
+    if (plan.found)
+      c.note(fmt::format("plan: {} states, min σmin {:.4f} ≥ margin {:.4f} over a dense check, {:.2f} s", plan.path.size(),
+                         plan.minSigma, plan.margin, plan.seconds));
+  }
+  if (c.makeFigures()) {
+    plotReachability(m, boundary, "Reachability of the Verheye arm (OMPL samples per cell)",
+                     c.figurePath("gf05_workspace_reach.png"));
+    c.figure("gf05_workspace_reach.png",
+             "Samples per (ρ, z) cell from OMPL's uniform state sampler (log colour), and the images of det J = 0: "
+             "they bound the workspace and the 4-posture region (denser: four postures map there).");
+    std::vector<Eigen::Vector2d> trace;
+    if (plan.found) {
+      const Arm3RFrame<S>& f = r.cusps.frame;
+      for (const auto& q : plan.path) trace.push_back(workspaceSection(f, robot, q));
+    }
+    plotDexterity(m, boundary, trace, "Dexterity of the Verheye arm (best σmin/σmax per cell)",
+                  c.figurePath("gf05_workspace_dexterity.png"));
+    c.figure("gf05_workspace_dexterity.png",
+             "Best inverse condition number of the point Jacobian per cell; black: the tool point along the plan.");
+    if (plan.found) {
+      plotPathSigma(robot, plan, "σmin along the plan (OMPL RRTConnect)", c.figurePath("gf05_workspace_plan.png"));
+      c.figure("gf05_workspace_plan.png", "Distance from the singularities along the plan, and the margin asked.");
+    }
+  }
+}
+
+// 6R witness search: PUMA 560 (not cuspidal, det J factors) and a cuspidal 6R (the orthogonal
+// arm + spherical wrist, the IRB 6400C architecture).
+void witness6RStudy(Context& c) {
+  auto dh6 = [](const std::array<std::array<double, 3>, 6>& rows, const std::string& name) {
+    std::vector<DHRow<S>> r;
+    for (const auto& x : rows) {
+      DHRow<S> d;
+      d.a = x[0];
+      d.alpha = x[1];
+      d.d = x[2];
+      r.push_back(d);
+    }
+    return SerialRobot<S>::fromDH(r, DHConvention::Standard, SE3<S>(), SE3<S>(), name);
+  };
+  const double h = kPi / 2;
+  const SerialRobot<S> puma = dh6({{{0, h, 0}, {0.4318, 0, 0}, {0.0203, -h, 0.15005}, {0, h, 0.4318}, {0, -h, 0}, {0, 0, 0.05625}}},
+                                  "PUMA 560");
+  const Witness6R wp = findWitness6R(puma, 2, 0.1);
+  c.checkEqual("PUMA 560: no witness after 2 poses (it is not cuspidal; the search says 'not a proof')", 1,
+               !wp.found && wp.note.find("not a proof") != std::string::npos);
+  c.note(fmt::format("PUMA: {} postures, {} same-sign pairs planned, {:.1f} s", wp.posturesSeen, wp.pairsTried, wp.seconds));
+  const SerialRobot<S> cusp6 = dh6({{{1, -h, 0}, {2, h, 1}, {1.5, 0, 0}, {0, -h, 0}, {0, h, 0}, {0, 0, 0.3}}},
+                                   "orthogonal arm + spherical wrist");
+  const Witness6R w = findWitness6R(cusp6, 8, 0.5);
+  c.checkEqual("orthogonal arm (1, 2, 1.5, 1, 0) + spherical wrist: a witness found", 1, w.found);
+  if (!w.found) return;
+  c.checkResidual("both ends reach the pose", std::max(w.startResidual, w.goalResidual), Tolerance<S>::sqrtEpsilon());
+  c.checkEqual("sign·det J > 0 over the dense check of the path", 1, w.minSignedDet > 0);
+  c.note(fmt::format("witness after {} poses, {} pairs: {} path states, min sign·det J / L³ {:.3g} (margin {:.3g}), {:.1f} s",
+                     w.posesTried, w.pairsTried, w.path.size(), w.minSignedDet, w.margin, w.seconds));
+  if (c.makeFigures()) {
+    renderRobotPath(cusp6, w.path, 5, "A cuspidal 6R changes posture without a singularity",
+                    c.figurePath("gf05_cusp_witness_6r.png"), Eigen::Vector3d(-0.35, -1.0, -0.3));
+    c.figure("gf05_cusp_witness_6r.png",
+             "6R witness (OMPL RRTConnect in joint space, det J of one sign): start (green) and goal (purple) "
+             "postures reach the same pose; ghosts in between; the tool point's trace in black.");
+  }
+}
+
 SOMA_STUDY({.id = "GF-5.2.3-cuspidal-posture-change",
             .title = "Cuspidal 3R arm: cusp points (two methods), circling a cusp (Fig. 5.2), an OMPL witness",
             .source = "GF §5.2.3", .chapter = kChapter, .run = cuspidalPostureChange});
 SOMA_STUDY({.id = "GF-5.2.3-bifurcation-factorisation",
             .title = "At det J = 0 two roots of the 3R IK equation coalesce",
             .source = "GF §5.2.3", .chapter = kChapter, .run = bifurcation});
+SOMA_STUDY({.id = "SOMA-5.2.3-cusp-map",
+            .title = "Parameter-space map of orthogonal 3R arms by number of cusps (TBB), traced cross-check",
+            .source = "GF §5.2.3; Baili, Wenger, Chablat 2004", .chapter = kChapter, .run = cuspMapStudy});
+SOMA_STUDY({.id = "SOMA-5.2.3-workspace-ompl",
+            .title = "Workspace probing with OMPL: reachability, dexterity, singular boundary, a plan away from det J = 0",
+            .source = "GF §5.2.3", .chapter = kChapter, .run = workspaceStudy});
+SOMA_STUDY({.id = "SOMA-5.2.3-witness-6r",
+            .title = "6R witness search: PUMA 560 none found (not a proof), a cuspidal 6R found",
+            .source = "GF §5.2.3; Wenger", .chapter = kChapter, .run = witness6RStudy});
 
 }  // namespace
 }  // namespace soma::studies

@@ -134,7 +134,15 @@ void plotSection(const CuspidalReport& r, const std::string& title, const std::f
   plot.x.label = "ρ = √(x² + y²)";
   plot.y.label = "z";
   plot.equalAspect = true;
-  plot.legend = render::LegendCorner::BottomLeft;
+  // Legend top right, in a strip to the right of the section (the curves fill the other corners).
+  plot.legend = render::LegendCorner::TopRight;
+  {
+    double rmax = 0;
+    for (const auto& b : r.branches)
+      for (const auto& s : b.section) rmax = std::max(rmax, s(0));
+    plot.x.min = -0.05 * rmax;
+    plot.x.max = 1.9 * rmax;
+  }
   bool first = true;
   for (const auto& b : r.branches) {
     std::vector<double> xs, ys;
@@ -225,9 +233,16 @@ void plotWitness(const CuspidalReport& r, const std::string& title, const std::f
 }
 
 render::Color cuspCountColor(int count) {
-  // 0 cusps light grey, then the colour map by count (2, 4, 6, ... → increasingly yellow).
+  // Discrete classes: 0 light grey, 2 blue, 4 orange, 6 green, 8+ purple; odd counts (an arm on a
+  // boundary, where two cusps merge) black.
   if (count <= 0) return render::Color::hex(0xDDDDDD);
-  return render::colorMap(std::min(1.0, 0.15 + 0.85 * (count - 1) / 7.0));
+  if (count % 2 == 1) return render::palette::black;
+  switch (count) {
+    case 2: return render::palette::skyBlue;
+    case 4: return render::palette::orange;
+    case 6: return render::palette::bluishGreen;
+    default: return render::palette::reddishPurple;
+  }
 }
 
 void plotCuspMap(const CuspMap& m, const std::string& title, const std::filesystem::path& png,
@@ -257,10 +272,11 @@ void plotCuspMap(const CuspMap& m, const std::string& title, const std::filesyst
   plot.x.min = cells.x0;
   plot.x.max = cells.x1;
   plot.y.min = cells.y0;
-  plot.y.max = cells.y1;
+  plot.y.max = cells.y1 + 0.36 * (cells.y1 - cells.y0);  // a free strip for the legend
   for (int c = 0; c <= maxCount; ++c)
     if (seen[std::size_t(c)] > 0)
-      plot.legendSwatches.emplace_back(fmt::format("{} cusp{} ({} arms)", c, c == 1 ? "" : "s", seen[std::size_t(c)]),
+      plot.legendSwatches.emplace_back(fmt::format("{} cusp{} ({} arms{})", c, c == 1 ? "" : "s", seen[std::size_t(c)],
+                                                   c % 2 == 1 ? ", on a boundary" : ""),
                                        cuspCountColor(c));
   if (!checks.empty()) {
     std::vector<double> ax, ay, bx, by;
@@ -304,7 +320,7 @@ int cuspidalMapCommand(const std::filesystem::path& file, const std::string& map
   for (int c : m.counts) ++hist[std::size_t(c)];
   const std::string name = rf.robot.name().empty() ? file.stem().string() : rf.robot.name();
   if (!png.empty())
-    plotCuspMap(m, fmt::format("{}: number of cusp points over ({}, {})", name, x.name, y.name), png);
+    plotCuspMap(m, fmt::format("number of cusp points over ({}, {})", x.name, y.name), png);
   if (json) {
     nlohmann::json j;
     j["robot"] = file.string();
