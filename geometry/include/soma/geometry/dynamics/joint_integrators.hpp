@@ -5,8 +5,8 @@
 //  * implicitMidpointStep: the implicit midpoint rule on Hamilton's equations in the canonical
 //    coordinates (θ, π) of GF §13.5 (π = A θ̇). It is symplectic (a Gauss–Legendre collocation
 //    method with one stage) and symmetric, so the energy error stays bounded, O(h²), with no
-//    secular drift. The stage equation k = f(y + h k / 2) is solved by fixed-point iteration
-//    to Tolerance<S>::identity(64) relative; it converges when h · Lip(f) < 2.
+//    secular drift. The stage equation k = f(y + h k / 2) is solved by simplified Newton
+//    iteration (Jacobian of f by forward differences once per step) to Tolerance<S>::identity(64).
 // Instantiated for the five scalars in geometry/src/dynamics/joint_integrators.cpp.
 #include "soma/geometry/dynamics/serial_dynamics.hpp"
 
@@ -24,7 +24,7 @@ template <class S>
 JointState<S> rk4Step(const SerialDynamics<S>& robot, const JointState<S>& y, const S& h, const DynVector<S>& tau);
 
 /// One implicit-midpoint step in (θ, π) with constant τ. `iterations` (optional) receives the
-/// number of fixed-point sweeps. InvalidInput if h is not finite and positive; std::runtime_error
+/// number of Newton sweeps. InvalidInput if h is not finite and positive; std::runtime_error
 /// if the iteration does not converge in 200 sweeps (h too large for this state).
 template <class S>
 CanonicalState<S> implicitMidpointStep(const SerialDynamics<S>& robot, const CanonicalState<S>& y, const S& h,
