@@ -145,8 +145,64 @@ template <class S> DynMatrix<S> SerialDynamics<S>::massMatrix(const ChainConfigu
   }
   return A;
 }
+// The same A_ij = s_iᵀ N̄_max(i,j) s_j without 6×6 algebra (the fast path): the placements G_i by
+// Rodrigues, s_i = Ad(G_i)s_i⁰ by 3×3 blocks, and the tail sums N̄_i kept as (mass M, first moment
+// h = Σ m c, inertia about the origin Ī), which add; N̄ s = (Ī ω + h × v, M v − h × ω); then
+// f_j = N̄_j s_j and A_ij = s_i · f_j (i ≤ j). GF §13.2.2 lines 7877–7887
 template <class S> DynMatrix<S> SerialDynamics<S>::massMatrix(const DynVector<S>& theta) const {
-  return massMatrix(configuration(theta));
+  using std::cos;
+  using std::sin;
+  checkState(theta, "θ");
+  const int n = dof();
+  const std::size_t nn = static_cast<std::size_t>(n);
+  std::vector<Vec3<S>> w(nn), v(nn), h(nn);
+  std::vector<Mat3<S>> I(nn);
+  std::vector<S> M(nn);
+  Mat3<S> R = Mat3<S>::Identity();
+  Vec3<S> t = Vec3<S>::Zero();
+  for (int i = 0; i < n; ++i) {
+    const std::size_t k = std::size_t(i);
+    const Vec3<S> sw = screws_[k].ang(), sv = screws_[k].lin();
+    // s_i = Ad(G_{i−1}) s_i⁰ (H_i fixes s_i⁰): ω = R ω⁰, v = R v⁰ + t × R ω⁰
+    w[k] = R * sw;
+    v[k] = R * sv + t.cross(w[k]);
+    Mat3<S> Ri;
+    Vec3<S> ti;
+    const S th = theta(i);
+    if (revolute_[k]) {
+      const Mat3<S> W = skew(sw);
+      Ri = Mat3<S>::Identity() + sin(th) * W + (S(1) - cos(th)) * (W * W);
+      const Vec3<S> wxv = sw.cross(sv);
+      ti = wxv - Ri * wxv + (th * sw.dot(sv)) * sw;
+    } else {
+      Ri.setIdentity();
+      ti = th * sv;
+    }
+    t = R * ti + t;
+    R = R * Ri;
+    const SpatialInertia<S>& L = links_[k];
+    const Vec3<S> c = R * L.centreOfMass() + t;
+    const Mat3<S> C = skew(c);
+    M[k] = L.mass();
+    h[k] = L.mass() * c;
+    I[k] = R * L.inertiaAboutCentre() * R.transpose() - L.mass() * (C * C);
+  }
+  for (int i = n - 2; i >= 0; --i) {
+    const std::size_t k = std::size_t(i);
+    M[k] += M[k + 1];
+    h[k] += h[k + 1];
+    I[k] += I[k + 1];
+  }
+  DynMatrix<S> A(n, n);
+  for (int j = 0; j < n; ++j) {
+    const std::size_t k = std::size_t(j);
+    const Vec3<S> fl = I[k] * w[k] + h[k].cross(v[k]), ff = M[k] * v[k] - h[k].cross(w[k]);
+    for (int i = 0; i <= j; ++i) {
+      A(i, j) = w[std::size_t(i)].dot(fl) + v[std::size_t(i)].dot(ff);
+      A(j, i) = A(i, j);
+    }
+  }
+  return A;
 }
 
 namespace detail {
