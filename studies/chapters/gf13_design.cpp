@@ -3,6 +3,8 @@
 // and the Gaussian curvature of a 2R inertia metric (errata 11, 12, 18–20, 23).
 #include "gf13_common.hpp"
 
+#include "soma/render/plot.hpp"
+
 #include <Eigen/Eigenvalues>
 
 namespace soma::studies::gf13 {
@@ -375,6 +377,47 @@ void gaussian(Context& ctx) {
                                d1([&](const Q& u) { return Ai(u)(0, 1); }), d1([&](const Q& u) { return Ai(u)(1, 1); }),
                                d2([&](const Q& u) { return Ai(u)(0, 0); }));
   ctx.checkNear("the printed K equals the Brioschi curvature of A⁻¹ (μ₁, μ₂ orthonormal for A⁻¹)", Kinv, Kp, 1e-9 * std::max(1.0, abs(Kinv)));
+  if (ctx.makeFigures()) {
+    // K(θ₂) over a turn: Brioschi K(A), the corrected closed form, the printed formula (= K(A⁻¹))
+    std::vector<double> ts, kb, kc, kp;
+    for (int k = 0; k <= 72; ++k) {
+      const double th2 = -pi<double>() + 2 * pi<double>() * k / 72;
+      auto Aat = [&](const Q& u) {
+        DynVector<Q> a(2);
+        a << Q(0), Q(th2) + u;
+        return rq.massMatrix(a);
+      };
+      const DynMatrix<Q> M0 = Aat(Q(0));
+      const double e0 = double(M0(0, 0)), f0 = double(M0(0, 1)), g0 = double(M0(1, 1));
+      const double ev = d1([&](const Q& u) { return Aat(u)(0, 0); }), fv = d1([&](const Q& u) { return Aat(u)(0, 1); });
+      const double evv = d2([&](const Q& u) { return Aat(u)(0, 0); });
+      auto det = [&](const Q& u) {
+        const DynMatrix<Q> A = Aat(u);
+        return A(0, 0) * A(1, 1) - A(0, 1) * A(0, 1);
+      };
+      const double dd = e0 * g0 - f0 * f0, ddp = d1(det), ddpp = d2(det);
+      ts.push_back(th2);
+      kb.push_back(brioschi(e0, f0, g0, ev, fv, 0, evv));
+      kc.push_back((ev * ddp - 2 * dd * evv) / (4 * dd * dd));
+      kp.push_back(g0 / 4 * (2 * dd * ddpp - 3 * ddp * ddp) / (dd * dd));
+    }
+    namespace rd = soma::render;
+    rd::Plot pl;
+    pl.title = "Gaussian curvature of a random 2R inertia metric";
+    pl.x.label = "θ₂ [rad]";
+    pl.y.label = "K";
+    pl.legend = rd::LegendCorner::TopLeft;
+    pl.add("Brioschi K(A) (from differences of A)", ts, kb, rd::Color::hex(0x0072B2));
+    auto& corr = pl.add("corrected (A₁₁'Δ' − 2ΔA₁₁'')/(4Δ²)", ts, kc, rd::Color::hex(0x009E73));
+    corr.line = false;
+    corr.markers = true;
+    pl.add("printed (A₂₂/4)(2ΔΔ'' − 3Δ'²)/Δ² (erratum 11)", ts, kp, rd::Color::hex(0xD55E00)).dashed = true;
+    const std::string file = "GF-13.6.3-gaussian-curvature.png";
+    rd::renderPlotPng(pl, ctx.figurePath(file));
+    ctx.figure(file, "Gaussian curvature K(θ₂) of the inertia metric of a random 2R (independent of θ₁): the "
+                     "Brioschi formula on A and the corrected closed form coincide; the printed formula is the "
+                     "curvature of A⁻¹ (erratum 11).");
+  }
   ctx.note("Random 2R at θ₂ = 0.6: K(A) = " + toString(Kb, 6) + " (Brioschi) = " + toString(Kc, 6) + " (corrected formula); "
            "printed formula " + toString(Kp, 6) + "; Δ'' = " + toString(Dpp, 6) + " (differences), printed " + toString(DppBook(4), 6) + ".");
 }
