@@ -4,6 +4,7 @@
 // The overloads must be declared before Eigen is first included: __float128 is a builtin type,
 // so argument-dependent lookup cannot find them later.
 // (DESIGN §2: the scalar ladder.)  Requires GNU extensions (gnu++20) and libquadmath.
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -13,6 +14,14 @@ extern "C" {
 #ifdef EIGEN_CORE_H
 #error "soma/algebra/float128.hpp must be included before Eigen (include soma/algebra/scalar.hpp first)"
 #endif
+
+namespace soma::detail {
+// IEEE binary128 special values from their bit patterns (sign 0, exponent 0x7fff; the top mantissa
+// bit is the quiet bit). GCC's __builtin_huge_valq/__builtin_nanq are not in clang, so neither is used.
+inline __float128 float128FromHighBits(unsigned long long high) noexcept {
+  return std::bit_cast<__float128>(static_cast<unsigned __int128>(high) << 64);
+}
+}  // namespace soma::detail
 
 namespace std {
 #if !defined(__GLIBCXX_FLOAT128_LIMITS)
@@ -41,9 +50,9 @@ template <> struct numeric_limits<__float128> {
   static __float128 lowest() noexcept { return -FLT128_MAX; }
   static __float128 epsilon() noexcept { return FLT128_EPSILON; }
   static __float128 round_error() noexcept { return 0.5Q; }
-  static __float128 infinity() noexcept { return __builtin_huge_valq(); }
-  static __float128 quiet_NaN() noexcept { return __builtin_nanq(""); }
-  static __float128 signaling_NaN() noexcept { return __builtin_nansq(""); }
+  static __float128 infinity() noexcept { return soma::detail::float128FromHighBits(0x7fff000000000000ULL); }
+  static __float128 quiet_NaN() noexcept { return soma::detail::float128FromHighBits(0x7fff800000000000ULL); }
+  static __float128 signaling_NaN() noexcept { return soma::detail::float128FromHighBits(0x7fff400000000000ULL); }
   static __float128 denorm_min() noexcept { return FLT128_DENORM_MIN; }
 };
 #endif
@@ -103,8 +112,8 @@ template <> struct NumTraits<__float128> : GenericNumTraits<__float128> {
   static inline Real dummy_precision() { return Real(1e-28); }
   static inline Real highest() { return FLT128_MAX; }
   static inline Real lowest() { return -FLT128_MAX; }
-  static inline Real infinity() { return __builtin_huge_valq(); }
-  static inline Real quiet_NaN() { return __builtin_nanq(""); }
+  static inline Real infinity() { return std::numeric_limits<__float128>::infinity(); }
+  static inline Real quiet_NaN() { return std::numeric_limits<__float128>::quiet_NaN(); }
   static inline int digits10() { return 33; }
   static inline int max_digits10() { return 36; }
 };

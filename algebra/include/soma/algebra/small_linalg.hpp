@@ -1,7 +1,7 @@
 #pragma once
 // Small dense decompositions (a handful of rows and columns: screw systems, Jacobians, Study
 // 3-planes): one-sided Jacobi SVD, singular values, numerical rank, cyclic Jacobi symmetric
-// eigen-decomposition, pivoted Gram–Schmidt completion and an LU determinant. Hand-written
+// eigen-decomposition, pivoted Gram–Schmidt completion, an LU determinant and a small solve. Hand-written
 // because Eigen's JacobiSVD/SelfAdjointEigenSolver for the five scalars cost minutes of compile
 // time (measured: > 3 min CPU, 2.6 GB for one TU). Include it from .cpp/_impl files only.
 #include "soma/algebra/tolerance.hpp"
@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 namespace soma::detail {
@@ -188,6 +189,40 @@ template <class S> S smallDeterminant(SmallMat<S> a) {
     }
   }
   return det;
+}
+
+/// Solves a x = b (square a) by Gaussian elimination with partial pivoting; b ← x. Returns the
+/// ratio smallest/largest pivot modulus (0 when a is singular, b then unchanged in meaning): a
+/// cheap conditioning indicator for the caller's threshold.
+template <class S, int N>
+S smallSolveInPlace(Eigen::Matrix<S, N, N> a, Eigen::Matrix<S, N, 1>& b) {
+  using std::abs;
+  const Eigen::Index n = a.rows();
+  S pmin(0), pmax(0);
+  for (Eigen::Index c = 0; c < n; ++c) {
+    Eigen::Index p = c;
+    for (Eigen::Index r = c + 1; r < n; ++r)
+      if (abs(a(r, c)) > abs(a(p, c))) p = r;
+    const S piv = abs(a(p, c));
+    if (piv == S(0)) return S(0);
+    if (c == 0 || piv < pmin) pmin = piv;
+    if (piv > pmax) pmax = piv;
+    if (p != c) {
+      a.row(p).swap(a.row(c));
+      std::swap(b(p), b(c));
+    }
+    for (Eigen::Index r = c + 1; r < n; ++r) {
+      const S f = a(r, c) / a(c, c);
+      a.row(r).tail(n - c) -= f * a.row(c).tail(n - c);
+      b(r) -= f * b(c);
+    }
+  }
+  for (Eigen::Index c = n - 1; c >= 0; --c) {
+    S v = b(c);
+    for (Eigen::Index k = c + 1; k < n; ++k) v -= a(c, k) * b(k);
+    b(c) = v / a(c, c);
+  }
+  return pmin / pmax;
 }
 
 }  // namespace soma::detail
