@@ -266,7 +266,7 @@ int main(int argc, char** argv) {
   stewart->add_option("platform", stewartFile, "platform JSON: {\"base\": [6 points], \"platform\": [6 points], "
                                                "\"leg_lengths\": [6]}")
       ->required();
-  stewart->add_option("--method", stewartMethod, "homotopy")->capture_default_str();
+  stewart->add_option("--method", stewartMethod, "homotopy (all 40 complex solutions, certified count), ceres or nlopt (multi-start, real postures only)")->capture_default_str();
   addScalarOptions(stewart, stewartScalar);
   stewart->add_flag("--json", stewartJson, "print one JSON object");
 

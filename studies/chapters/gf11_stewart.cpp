@@ -1,14 +1,18 @@
 // Studies of GF §11.5.2 and §11.5.4: the forward kinematics of Stewart–Gough platforms counted
 // numerically — 40 complex postures of a general 6-6 platform, 16 of a 6-3 platform — by the
-// homotopy solver of geometry/parallel/stewart.hpp, and the real postures of one platform drawn.
-// Double precision (the solver is tested in all five scalars in tests/geometry/parallel).
+// homotopy solver of geometry/parallel/stewart.hpp, and the real postures of one platform drawn;
+// SOMA-11.5.4-stewart-speed-accuracy: every method × the five scalars on random platforms.
+// Double precision except that study (the solver is tested in all five scalars in tests/geometry/parallel).
 #include "soma/geometry/parallel/stewart.hpp"
+#include "soma/geometry/parallel/stewart_numeric.hpp"
 #include "soma/geometry/study/constraint_quadrics.hpp"
+#include "soma/render/plot.hpp"
 #include "soma/render/render.hpp"
 #include "soma/studies/study.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <random>
 
 namespace soma::studies::gf11stewart {
@@ -255,6 +259,190 @@ void sixThree(Context& c) {
   c.checkEqual("… paths of the 40 that end at singular points of the degenerate system", 24 * n, singular);
 }
 
+
+// ---- SOMA-11.5.4-stewart-speed-accuracy ---------------------------------------------------------
+struct Case {
+  StewartPlatform<S> P;
+  SE3<S> pose;
+};
+
+/// The case in T, its leg lengths recomputed in T from the defining posture (so that posture is a
+/// solution to the precision of T, not only of double).
+template <class T> StewartPlatform<T> castPlatform(const Case& k) {
+  StewartPlatform<T> Q;
+  for (int i = 0; i < 6; ++i) {
+    Q.base[i] = castMatrix<T>(k.P.base[i]);
+    Q.platform[i] = castMatrix<T>(k.P.platform[i]);
+  }
+  Q.legs = stewartLegLengths<T>(Q, k.pose.template cast<T>());
+  return Q;
+}
+
+struct TradeRow {
+  std::string method, scalar;
+  std::size_t platforms = 0;
+  double median = 0, p95 = 0, worst = 0, completeness = 0;
+  std::size_t retracked = 0;
+};
+
+double quantile(std::vector<double> v, double p) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[std::min(v.size() - 1, std::size_t(p * double(v.size())))];
+}
+
+/// Distance of two postures: max entry of the 4×4 difference, translations over the platform size.
+template <class T> double poseDistance(const SE3<T>& a, const SE3<double>& b, double size) {
+  Mat4<double> m = (a.template cast<double>().matrix() - b.matrix()).cwiseAbs();
+  m.topRightCorner<3, 1>() /= size;
+  return m.maxCoeff();
+}
+
+/// The homotopy in T on the first n cases: 40 complex solutions found, the defining posture among the
+/// real ones (its completeness against the ground truth), the worst residual in T.
+template <class T>
+TradeRow homotopyRow(const std::vector<Case>& cases, std::size_t n, std::size_t& short40,
+                     std::vector<std::vector<SE3<S>>>* keep) {
+  TradeRow row{"homotopy", std::string(scalarName<T>())};
+  std::vector<double> times;
+  std::size_t found = 0;
+  const double match = std::max(toDouble(Tolerance<T>::precision(2)), toDouble(Tolerance<S>::precision(2)));
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto P = castPlatform<T>(cases[k]);
+    const auto sol = solveStewartForward<T>(P);
+    times.push_back(sol.seconds);
+    short40 += sol.complexCount() != 40;
+    row.retracked += sol.paths_tracked > 40;
+    const double size = toDouble(stewartScale<T>(P));
+    bool hit = false;
+    for (std::size_t j = 0; j < sol.count(); ++j) {
+      hit = hit || poseDistance(sol.postures[j], cases[k].pose, size) < match;
+      row.worst = std::max(row.worst, toDouble(sol.residuals[j]));
+    }
+    found += hit;
+    if (keep) {
+      keep->emplace_back();
+      for (const auto& g : sol.postures) keep->back().push_back(g.template cast<S>());
+    }
+  }
+  row.platforms = n;
+  row.median = quantile(times, 0.5);
+  row.p95 = quantile(times, 0.95);
+  row.completeness = double(found) / double(n);
+  return row;
+}
+
+/// A multi-start method (double) on the first n cases: the fraction of the homotopy's real
+/// postures it found, and the postures it returned that the homotopy did not (`outside`).
+template <class F>
+TradeRow numericRow(const std::string& name, const std::vector<Case>& cases, std::size_t n,
+                    const std::vector<std::vector<SE3<S>>>& ref, std::size_t& outside, F&& solve) {
+  TradeRow row{name, "double"};
+  std::vector<double> times;
+  std::size_t refTotal = 0, refFound = 0;
+  const double same = Tolerance<S>::precision(2);
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto sol = solve(cases[k].P);
+    times.push_back(sol.seconds);
+    const double size = stewartScale<S>(cases[k].P);
+    for (std::size_t j = 0; j < sol.count(); ++j) {
+      row.worst = std::max(row.worst, sol.residuals[j]);
+      bool known = false;
+      for (const auto& a : ref[k]) known = known || poseDistance(sol.postures[j], a, size) < same;
+      outside += !known;
+    }
+    for (const auto& a : ref[k]) {
+      ++refTotal;
+      bool hit = false;
+      for (const auto& b : sol.postures) hit = hit || poseDistance(b, a, size) < same;
+      refFound += hit;
+    }
+  }
+  row.platforms = n;
+  row.median = quantile(times, 0.5);
+  row.p95 = quantile(times, 0.95);
+  row.completeness = refTotal ? double(refFound) / double(refTotal) : 1.0;
+  return row;
+}
+
+// GF §11.5.4 (40 postures); SOMA-11.5.4-stewart-speed-accuracy
+void speedAccuracy(Context& c) {
+  const std::size_t nDouble = 1000, nFloat = 200, nLong = 50, nQuad = 3, nMpfr = 1, nNum = 100;
+  std::mt19937_64 g(20261130);
+  std::vector<Case> cases(nDouble);
+  for (auto& k : cases) k.P = randomPlatform(g, &k.pose);
+  (void)stewartStartSolutions<S>();  // once per process: not part of any platform's time
+  std::vector<TradeRow> rows;
+  std::vector<std::vector<SE3<S>>> ref;
+  std::array<std::size_t, 5> short40{};
+  rows.push_back(homotopyRow<S>(cases, nDouble, short40[0], &ref));
+  rows.push_back(homotopyRow<float>(cases, nFloat, short40[1], nullptr));
+  rows.push_back(homotopyRow<long double>(cases, nLong, short40[2], nullptr));
+  rows.push_back(homotopyRow<__float128>(cases, nQuad, short40[3], nullptr));
+  rows.push_back(homotopyRow<mpfr::mpreal>(cases, nMpfr, short40[4], nullptr));
+  std::size_t outCeres = 0, outNlopt = 0;
+  const StewartNumericOptions no;
+  rows.push_back(numericRow(fmt::format("ceres ({} starts)", no.starts), cases, nNum, ref, outCeres,
+                            [&](const StewartPlatform<S>& P) { return solveStewartForwardCeres(P, no); }));
+  rows.push_back(numericRow(fmt::format("nlopt ({} starts)", no.starts), cases, nNum, ref, outNlopt,
+                            [&](const StewartPlatform<S>& P) { return solveStewartForwardNlopt(P, no); }));
+
+  const std::array<double, 5> floorOf{toDouble(Tolerance<S>::identity()), toDouble(Tolerance<float>::identity()),
+                                      toDouble(Tolerance<long double>::identity()),
+                                      toDouble(Tolerance<__float128>::identity()),
+                                      toDouble(Tolerance<mpfr::mpreal>::identity())};
+  for (std::size_t i = 0; i < 5; ++i) {
+    const auto& r = rows[i];
+    c.checkEqual(fmt::format("homotopy {}: platforms short of 40 complex solutions (of {})", r.scalar, r.platforms), 0,
+                 static_cast<long long>(short40[i]));
+    c.checkEqual(fmt::format("homotopy {}: defining posture found (of {} platforms)", r.scalar, r.platforms),
+                 static_cast<long long>(r.platforms), std::llround(r.completeness * double(r.platforms)));
+    // Float: the polish runs in float, but the start solutions and escalations in wider scalars.
+    c.checkResidual(fmt::format("homotopy {}: worst leg residual / platform size", r.scalar), r.worst, 64 * floorOf[i]);
+  }
+  // A real posture the homotopy did not return would falsify its completeness.
+  c.checkEqual("ceres postures outside the homotopy's real set", 0, static_cast<long long>(outCeres));
+  c.checkEqual("nlopt postures outside the homotopy's real set", 0, static_cast<long long>(outNlopt));
+  c.checkResidual("ceres: worst residual", rows[5].worst, Tolerance<S>::identity(64));
+  c.checkResidual("nlopt: worst residual", rows[6].worst, Tolerance<S>::identity(64));
+
+  std::string table = "method | scalar | platforms | median ms | p95 ms | worst residual | completeness | re-tracked\n";
+  for (const auto& r : rows)
+    table += fmt::format("{} | {} | {} | {:.2f} | {:.2f} | {:.2e} | {:.4f} | {}\n", r.method, r.scalar, r.platforms,
+                         1e3 * r.median, 1e3 * r.p95, r.worst, r.completeness, r.retracked);
+  c.note(table);
+  c.note(fmt::format(
+      "Completeness: for the homotopy rows, the fraction of platforms whose defining posture (random posture → "
+      "leg lengths) is among the real answers; for ceres/nlopt, the fraction of the homotopy's real postures "
+      "(double) they found on the first {} platforms. Fewer platforms in float ({}), long double ({}), float128 "
+      "({}) and mpfr ({}) to keep the report short. 're-tracked' counts platforms where some path was tracked "
+      "again (smaller step, another gamma or a wider scalar). Times are wall seconds on a shared machine "
+      "(papers/benchmarks/stewart.md has quiet runs).",
+      nNum, nFloat, nLong, nQuad, nMpfr));
+
+  if (c.makeFigures()) {
+    render::Plot plot;
+    plot.title = "Stewart-Gough forward kinematics: time per platform vs worst residual";
+    plot.x.label = "time per platform (s): median to p95";
+    plot.x.scale = render::AxisScale::Log10;
+    plot.x.max = 1e3;  // room for the legend
+    plot.y.label = "worst leg residual / platform size";
+    plot.y.scale = render::AxisScale::Log10;
+    plot.y.max = 1e20;
+    std::size_t ci = 0;
+    for (const auto& r : rows) {
+      const double w = std::max(r.worst, 1e-80);
+      auto& sr = plot.add(r.method + " " + r.scalar, {r.median, r.p95}, {w, w}, render::palette::cycle(ci++));
+      sr.markers = true;
+      sr.line = true;
+    }
+    const std::string f = "SOMA-11.5.4-stewart-speed-accuracy.png";
+    render::renderPlotPng(plot, c.figurePath(f));
+    c.figure(f, "Each method and scalar: a segment from the median to the p95 time per platform, at its worst "
+                "residual (log-log).");
+  }
+}
+
 #define GF11S_STUDY(ID, TITLE, SOURCE, FN) \
   SOMA_STUDY({.id = ID, .title = TITLE, .source = SOURCE, .chapter = kChapter, .scalarGeneric = false, .run = FN})
 
@@ -263,6 +451,12 @@ GF11S_STUDY("GF-11.5.4-stewart-forty",
             "GF §11.5.4", stewartForty);
 GF11S_STUDY("GF-11.5.2-6-3-stewart-sixteen", "6-3 Stewart platform: 16 postures (the other 24 paths end singular)",
             "GF §11.5.2", sixThree);
+SOMA_STUDY({.id = "SOMA-11.5.4-stewart-speed-accuracy",
+            .title = "Stewart-Gough forward kinematics: every method × scalar, time, worst residual, completeness",
+            .source = "GF §11.5.4",
+            .chapter = "soma — Stewart platforms",
+            .scalarGeneric = false,
+            .run = speedAccuracy});
 
 }  // namespace
 }  // namespace soma::studies::gf11stewart

@@ -2,6 +2,7 @@
 
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/tolerance.hpp"
+#include "soma/geometry/parallel/stewart_numeric.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -57,17 +58,46 @@ int stewartImpl(const std::filesystem::path& file, const std::string& method, bo
   const StewartPlatform<S> P = readPlatform<S>(file);
   // The start system (a 128-path total-degree homotopy on a random complex platform) is solved
   // once per process; its time is reported apart from the per-platform solve.
-  const auto s0 = std::chrono::steady_clock::now();
-  (void)stewartStartSolutions<S>();
-  const double startSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count();
-  StewartForwardSolution<S> sol = solveStewartForward<S>(P);
-  sol.notes.push_back(fmt::format("start system (40 solutions of a random complex platform, 128-path total-degree "
-                                  "homotopy, once per process): {:.3g} s, not included in the time",
-                                  startSeconds));
-  bool ok = sol.complexCount() == sol.expected_count;
+  StewartForwardSolution<S> sol;
+  const bool numeric = method == "ceres" || method == "nlopt";
+  if (numeric) {
+    // Ceres and NLopt run in double; in a wider scalar each posture is then polished by Newton in S.
+    StewartPlatform<double> Pd;
+    for (int i = 0; i < 6; ++i) {
+      Pd.base[i] = castMatrix<double>(P.base[i]);
+      Pd.platform[i] = castMatrix<double>(P.platform[i]);
+      Pd.legs[i] = toDouble(P.legs[i]);
+    }
+    const auto d = method == "ceres" ? solveStewartForwardCeres(Pd) : solveStewartForwardNlopt(Pd);
+    sol.method = d.method;
+    sol.seconds = d.seconds;
+    sol.paths_tracked = d.paths_tracked;
+    sol.notes = d.notes;
+    for (const auto& g : d.postures) {
+      bool converged = true;
+      const SE3<S> gs = std::is_same_v<S, double>
+                            ? g.template cast<S>()
+                            : polishStewartPosture<S>(P, g.template cast<S>(), &converged);
+      if (!converged) sol.notes.push_back("a posture did not converge in the Newton polish in " +
+                                          std::string(scalarName<S>()));
+      sol.postures.push_back(gs);
+      sol.residuals.push_back(stewartResidual<S>(P, gs));
+    }
+    sol.real_count = static_cast<int>(sol.postures.size());
+  } else {
+    // The start system (a 128-path total-degree homotopy on a random complex platform) is solved
+    // once per process; its time is reported apart from the per-platform solve.
+    const auto s0 = std::chrono::steady_clock::now();
+    (void)stewartStartSolutions<S>();
+    const double startSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count();
+    sol = solveStewartForward<S>(P);
+    sol.notes.push_back(fmt::format("start system (40 solutions of a random complex platform, 128-path total-degree "
+                                    "homotopy, once per process): {:.3g} s, not included in the time",
+                                    startSeconds));
+  }
+  bool ok = numeric || sol.complexCount() == sol.expected_count;
   for (const auto& r : sol.residuals)
     if (!(r <= Tolerance<S>::sqrtEpsilon())) ok = false;
-  (void)method;
   if (json_) {
     json j;
     j["platform_file"] = file.string();
@@ -80,7 +110,8 @@ int stewartImpl(const std::filesystem::path& file, const std::string& method, bo
     j["scalar"] = std::string(scalarName<S>());
     j["seconds"] = sol.seconds;
     j["expected_count"] = sol.expected_count;
-    j["complex_count"] = sol.complexCount();
+    if (!numeric) j["complex_count"] = sol.complexCount();
+    j["certified"] = !numeric;
     j["count"] = sol.count();
     j["paths_tracked"] = sol.paths_tracked;
     j["notes"] = sol.notes;
@@ -99,10 +130,15 @@ int stewartImpl(const std::filesystem::path& file, const std::string& method, bo
     return ok ? 0 : 1;
   }
   out << fmt::format("platform: {}   method: {}   scalar: {}\n", file.string(), sol.method, scalarName<S>());
-  out << fmt::format("complex solutions: {} found, {} expected ({} platform)   real postures: {}   "
-                     "time: {:.3g} s\n",
-                     sol.complexCount(), sol.expected_count, sol.expected_count == 16 ? "6-3" : "general 6-6",
-                     sol.count(), sol.seconds);
+  if (numeric)
+    out << fmt::format("real postures: {} (multi-start in double, {} starts: completeness not certified)   "
+                       "time: {:.3g} s\n",
+                       sol.count(), sol.paths_tracked, sol.seconds);
+  else
+    out << fmt::format("complex solutions: {} found, {} expected ({} platform)   real postures: {}   "
+                       "time: {:.3g} s\n",
+                       sol.complexCount(), sol.expected_count, sol.expected_count == 16 ? "6-3" : "general 6-6",
+                       sol.count(), sol.seconds);
   for (std::size_t k = 0; k < sol.count(); ++k) {
     const SE3<S>& g = sol.postures[k];
     const Vec3<S> t = g.translation();
@@ -154,8 +190,8 @@ template <class S> StewartPlatform<S> readPlatform(const std::filesystem::path& 
 
 int stewartCommand(const std::filesystem::path& platform, const std::string& method, ScalarKind scalar, bool json,
                    std::ostream& out) {
-  if (method != "homotopy" && method != "auto")
-    throw InvalidInput("--method: \"" + method + "\" is not one of auto homotopy");
+  if (method != "homotopy" && method != "auto" && method != "ceres" && method != "nlopt")
+    throw InvalidInput("--method: \"" + method + "\" is not one of auto homotopy ceres nlopt");
   return withScalar(scalar, [&]<class S>() { return stewartImpl<S>(platform, method, json, out); });
 }
 

@@ -813,44 +813,52 @@ template <class S> StewartForwardSolution<S> solveStewartForward(const StewartPl
   }
   const int found = out.complexCount();
   // Short with a few failed or singular endpoints (two solutions close together, a platform near
-  // a singular configuration): re-solve in float128, which tracks 10⁹ times more tightly, and say
-  // so. Many singular endpoints (more than 8 of 40) mean a degenerate platform (6-3: 24); a wider
-  // scalar ends there again, so the count is reported as it is.
+  // a singular configuration): re-solve in a wider scalar and say so — float in double (which
+  // itself goes on to float128 if still short), double and long double in float128 with fine
+  // tracking (10⁹ times tighter). Many singular endpoints (more than 8 of 40) mean a degenerate
+  // platform (6-3: 24); a wider scalar ends there again, so the count is reported as it is.
   const int unresolved = out.paths_failed + out.paths_singular;
-  if (found < out.expected_count && unresolved > 0 && (unresolved <= 8 || out.paths_failed > 0)) {
-    if constexpr (std::is_same_v<S, float> || std::is_same_v<S, double> || std::is_same_v<S, long double>) {
-      StewartPlatform<__float128> Q;
-      for (int i = 0; i < 6; ++i) {
-        Q.base[i] = castMatrix<__float128>(P.base[i]);
-        Q.platform[i] = castMatrix<__float128>(P.platform[i]);
-        Q.legs[i] = scalarCast<__float128>(P.legs[i]);
-      }
-      const auto hi = solveStewartForward<__float128>(Q, true);
-      if (hi.complexCount() > found) {
-        StewartForwardSolution<S> esc;
-        esc.notes = out.notes;
-        esc.notes.push_back("found " + std::to_string(found) + " of 40 in " + std::string(scalarName<S>()) +
-                            "; re-solved in float128 (paths tracked to 1e-17): " + std::to_string(hi.complexCount()));
-        for (const auto& n : hi.notes) esc.notes.push_back("float128: " + n);
-        for (const auto& x : hi.complex_solutions) {
-          StudyPointC<S> y;
-          for (int k = 0; k < 8; ++k) y[k] = std::complex<S>(scalarCast<S>(x[k].real()), scalarCast<S>(x[k].imag()));
-          esc.complex_solutions.push_back(y);
-        }
-        for (std::size_t k = 0; k < hi.postures.size(); ++k) {
-          const SE3<S> g = hi.postures[k].template cast<S>();
-          esc.postures.push_back(g);
-          esc.residuals.push_back(stewartResidual<S>(P, g));
-        }
-        esc.real_count = hi.real_count;
-        esc.expected_count = out.expected_count;
-        esc.paths_tracked = out.paths_tracked + hi.paths_tracked;
-        esc.paths_failed = hi.paths_failed;
-        esc.paths_at_infinity = hi.paths_at_infinity;
-        esc.paths_singular = hi.paths_singular;
-        out = esc;
-      }
+  const auto escalate = [&]<class W>(bool fine) {
+    StewartPlatform<W> Q;
+    for (int i = 0; i < 6; ++i) {
+      Q.base[i] = castMatrix<W>(P.base[i]);
+      Q.platform[i] = castMatrix<W>(P.platform[i]);
+      Q.legs[i] = scalarCast<W>(P.legs[i]);
     }
+    const auto hi = solveStewartForward<W>(Q, fine);
+    if (hi.complexCount() <= found) return;
+    StewartForwardSolution<S> esc;
+    esc.notes = out.notes;
+    esc.notes.push_back("found " + std::to_string(found) + " of 40 in " + std::string(scalarName<S>()) + "; re-solved in " +
+                        std::string(scalarName<W>()) + (fine ? " (paths tracked to 1e-17)" : "") + ": " +
+                        std::to_string(hi.complexCount()));
+    for (const auto& n : hi.notes) esc.notes.push_back(std::string(scalarName<W>()) + ": " + n);
+    for (const auto& x : hi.complex_solutions) {
+      StudyPointC<S> y;
+      for (int k = 0; k < 8; ++k) y[k] = std::complex<S>(scalarCast<S>(x[k].real()), scalarCast<S>(x[k].imag()));
+      esc.complex_solutions.push_back(y);
+    }
+    for (std::size_t k = 0; k < hi.postures.size(); ++k) {
+      const SE3<S> g = hi.postures[k].template cast<S>();
+      esc.postures.push_back(g);
+      esc.residuals.push_back(stewartResidual<S>(P, g));
+    }
+    esc.real_count = hi.real_count;
+    esc.expected_count = out.expected_count;
+    esc.paths_tracked = out.paths_tracked + hi.paths_tracked;
+    esc.paths_failed = hi.paths_failed;
+    esc.paths_at_infinity = hi.paths_at_infinity;
+    esc.paths_singular = hi.paths_singular;
+    out = esc;
+  };
+  // Short with no path failed or singular: two endpoints merged within the scalar's tolerance
+  // (float: a pair of close solutions). The same wider scalar sorts them apart.
+  const bool degenerate = out.paths_failed == 0 && out.paths_singular > 8;
+  if (found < out.expected_count && !degenerate && (unresolved <= 8 || out.paths_failed > 0)) {
+    if constexpr (std::is_same_v<S, float>)
+      escalate.template operator()<double>(false);
+    else if constexpr (std::is_same_v<S, double> || std::is_same_v<S, long double>)
+      escalate.template operator()<__float128>(true);
   }
   if (out.complexCount() < out.expected_count)
     out.notes.push_back("SHORT: " + std::to_string(out.complexCount()) + " of " + std::to_string(out.expected_count) +

@@ -1,6 +1,7 @@
 // Forward kinematics of the general Stewart–Gough platform (GF §11.5.4): all 40 complex
 // solutions by homotopy continuation, the real ones polished in the working scalar.
 #include "soma/geometry/parallel/stewart.hpp"
+#include "soma/geometry/parallel/stewart_numeric.hpp"
 
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/study_parameters.hpp"
@@ -241,4 +242,62 @@ TEST_CASE("Stewart planar base and platform: 40, real postures in mirror pairs",
     for (const auto& k : s.postures) best = std::min(best, (k.matrix() - m).norm());
     CHECK(best <= 1e-10);
   }
+}
+
+// ---- The multi-start methods (stewart_numeric.hpp) ------------------------------------------------
+
+TEST_CASE("Stewart ceres and nlopt: real postures only, each one of the homotopy's, the defining one found",
+          "[stewart][numeric]") {
+  auto& g = test::rng(1158);
+  for (int trial = 0; trial < 3; ++trial) {
+    SE3<double> pose;
+    const auto P = randomPlatform<double>(g, &pose);
+    const auto h = solveStewartForward<double>(P);
+    REQUIRE(h.complexCount() == 40);
+    for (const auto& sol : {solveStewartForwardCeres(P), solveStewartForwardNlopt(P)}) {
+      INFO(sol.method << ", platform " << trial << ": " << sol.count() << " postures, homotopy " << h.count());
+      CHECK(sol.count() >= 1);
+      CHECK(sol.count() <= h.count());
+      CHECK(nearest(sol, pose) <= Tolerance<double>::sqrtEpsilon());
+      for (std::size_t j = 0; j < sol.count(); ++j) {
+        CHECK(sol.residuals[j] <= Tolerance<double>::identity(64));
+        CHECK(nearest(h, sol.postures[j]) <= Tolerance<double>::sqrtEpsilon());  // no posture outside the set
+      }
+      CHECK_FALSE(sol.notes.empty());  // says it is not certified
+    }
+  }
+}
+
+TEST_CASE("Stewart ceres: impossible leg lengths give no posture and a note; bad input is rejected",
+          "[stewart][numeric]") {
+  auto& g = test::rng(1159);
+  SE3<double> pose;
+  auto P = randomPlatform<double>(g, &pose);
+  auto far = P;
+  for (auto& L : far.legs) L *= 40;  // legs far longer than the base and platform allow together
+  far.legs[0] = 1e-3;
+  const auto s = solveStewartForwardCeres(far);
+  CHECK(s.count() == 0);
+  CHECK(s.notes.size() == 2);
+  auto bad = P;
+  bad.legs[2] = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_AS(solveStewartForwardNlopt(bad), InvalidInput);
+  StewartNumericOptions none;
+  none.starts = 0;
+  CHECK_THROWS_AS(solveStewartForwardCeres(P, none), InvalidInput);
+}
+
+TEMPLATE_TEST_CASE("Stewart Newton polish reaches the rounding floor of the scalar from a nearby posture",
+                   "[stewart][numeric]", SOMA_TEST_SCALARS) {
+  using S = TestType;
+  auto& g = test::rng(1160);
+  SE3<S> pose;
+  const auto P = randomPlatform<S>(g, &pose);
+  Vec6<S> xi;
+  for (int k = 0; k < 6; ++k) xi(k) = test::uniform<S>(g, -1e-3, 1e-3);
+  bool converged = false;
+  const SE3<S> h = polishStewartPosture<S>(P, pose * SE3Tangent<S>(xi).exp(), &converged);
+  CHECK(converged);
+  CHECK(stewartResidual<S>(P, h) <= Tolerance<S>::identity(64));
+  CHECK((h.matrix() - pose.matrix()).norm() <= Tolerance<S>::identity(1u << 12));
 }
