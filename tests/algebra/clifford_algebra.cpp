@@ -4,6 +4,8 @@
 #include "soma/algebra/clifford/multivector.hpp"
 #include "support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::clifford;
 using namespace soma::test;
@@ -170,3 +172,4 @@ TEMPLATE_TEST_CASE("clifford: the book's small algebras and even subalgebras", "
   checkEvenIso((Signature<0, 2, 1>*)nullptr, (Signature<0, 3, 1>*)nullptr);  // Cl⁺(0,3,1)
 }
 
+}  // namespace SOMA_UNITY_ID

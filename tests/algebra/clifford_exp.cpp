@@ -4,6 +4,8 @@
 #include "soma/algebra/clifford/multivector.hpp"
 #include "support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::clifford;
 using namespace soma::test;
@@ -110,3 +112,5 @@ TEMPLATE_TEST_CASE("clifford inverses, norms and bivector exponentials", "[cliff
     CHECK_THROWS_WITH(V::basisBlade(0b11), Contains("not stored"));
   }
 }
+
+}  // namespace SOMA_UNITY_ID

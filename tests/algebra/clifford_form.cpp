@@ -9,6 +9,8 @@
 
 #include <bit>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::clifford;
 using namespace soma::test;
@@ -130,3 +132,5 @@ TEMPLATE_TEST_CASE("clifford algebra of a non-diagonal quadratic form via Sylves
   Q(0, 1) = S(1);
   CHECK_THROWS_WITH((FormBasis<Signature<2, 1, 0>, S>(Q)), Contains("not symmetric"));
 }
+
+}  // namespace SOMA_UNITY_ID

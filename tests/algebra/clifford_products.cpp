@@ -8,6 +8,8 @@
 //    products of a degenerate algebra must coincide with those coefficients.
 #include "clifford_checks.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::clifford;
 using namespace soma::test::clifford_checks;
@@ -31,3 +33,5 @@ TEMPLATE_TEST_CASE("clifford products in extended precision (small signatures)",
   checkAll<Signature<0, 3, 1>, S>(2);
   checkAll<Signature<1, 1, 1>, S>(2);
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -2,6 +2,8 @@
 // are described in clifford_products.cpp and live in clifford_checks.hpp.
 #include "clifford_checks.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::clifford;
 using namespace soma::test::clifford_checks;
@@ -14,3 +16,5 @@ TEMPLATE_TEST_CASE("clifford products of large signatures", "[clifford]", double
   checkAll<Signature<4, 4, 0>, S>(2);  // n = 8
   checkAll<Signature<0, 6, 2>, S>(2);  // n = 8, SB's rigid-body algebra
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -4,6 +4,8 @@
 
 #include "support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using std::abs;
 using std::cos;
@@ -86,3 +88,5 @@ TEMPLATE_TEST_CASE("double quaternions: bad input", "[double_quaternion]", doubl
   const DoubleQuaternion<S> b(Quat<S>(S(1), S(0), S(0), S(0)), Quat<S>(S(0), S(0), S(0), S(0)), S(0));
   CHECK_THROWS_WITH(a * b, Catch::Contains("different σ²"));
 }
+
+}  // namespace SOMA_UNITY_ID

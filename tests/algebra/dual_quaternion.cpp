@@ -7,6 +7,8 @@
 
 #include <vector>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using Catch::Matchers::Contains;
 
@@ -345,3 +347,5 @@ TEMPLATE_TEST_CASE("DQ rejects bad input with a clear message", "[dualquat]", SO
   bad(0, 0) += S(1) / S(10);
   REQUIRE_THROWS_WITH(DualQuaternion<S>::fromMatrix(bad), Contains("not orthogonal"));
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -4,6 +4,8 @@
 #include "soma/algebra/lie_algebra.hpp"
 #include "support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::test;
 using Catch::Matchers::Contains;
@@ -103,3 +105,5 @@ TEMPLATE_TEST_CASE("dexp series: ljac, rjac, and the printed 4th term (E4.9)", "
     CHECK(bad > S(10) * good);
   }
 }
+
+}  // namespace SOMA_UNITY_ID

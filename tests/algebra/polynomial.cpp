@@ -5,6 +5,8 @@
 #include "soma/algebra/errors.hpp"
 #include "support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 
 namespace {
@@ -64,3 +66,5 @@ TEST_CASE("polynomial: degree drops, quadratic without cancellation, bad input",
   CHECK_THROWS_AS(realRoots<double>({0, 0, 0}), InvalidInput);
   CHECK_THROWS_WITH(realRoots<double>({1, std::nan(""), 1}), Catch::Contains("coefficient 1"));
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -3,6 +3,8 @@
 #include "soma/algebra/quaternion.hpp"
 #include "support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::test;
 using Catch::Matchers::Contains;
@@ -102,3 +104,5 @@ TEMPLATE_TEST_CASE("quaternion charts as printed return a doubled coordinate (E2
   const S nan = std::numeric_limits<S>::quiet_NaN();
   CHECK_THROWS_WITH(rotationFromQuaternion(Quat<S>(nan, S(0), S(0), S(1))), Contains("NaN"));
 }
+
+}  // namespace SOMA_UNITY_ID

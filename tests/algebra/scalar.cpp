@@ -1,6 +1,8 @@
 // The scalar ladder itself: names, casts that keep every bit, text round trips, π, tolerances.
 #include "support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 
 TEST_CASE("scalar names parse and print", "[scalar]") {
@@ -59,3 +61,5 @@ TEST_CASE("mpfr precision is settable and validated", "[scalar]") {
   setMpfrBits(256);
   CHECK_THROWS_AS(setMpfrBits(0), std::invalid_argument);
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -3,6 +3,8 @@
 #include "soma/algebra/screw.hpp"
 #include "support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::test;
 using Catch::Matchers::Contains;
@@ -68,3 +70,5 @@ TEMPLATE_TEST_CASE("Chasles: screwOf inverts screwMotion", "[screw]", SOMA_TEST_
   const S nan = std::numeric_limits<S>::quiet_NaN();
   CHECK_THROWS_WITH(screwMotion(ax, Vec3<S>(nan, S(0), S(0)), S(0), S(1)), Contains("NaN"));
 }
+
+}  // namespace SOMA_UNITY_ID

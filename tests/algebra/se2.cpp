@@ -6,6 +6,8 @@
 
 #include <vector>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using Catch::Matchers::Contains;
 
@@ -322,3 +324,5 @@ TEMPLATE_TEST_CASE("SE2 rejects bad input with a message naming the defect", "[s
   CHECK_NOTHROW(SE2<S>::fromMatrix(near));
   CHECK_THROWS_AS(SE2Tangent<S>(nan, S(0), S(0)).exp(), InvalidInput);
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -4,6 +4,8 @@
 // twist velocity); rejection of bad input with a message naming the defect.
 #include "lie_suite.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::test;
 using Catch::Matchers::Contains;
@@ -157,3 +159,5 @@ TEMPLATE_TEST_CASE("SE3 rejects bad input with a message naming the defect", "[s
   CHECK_THROWS_WITH(SE3Tangent<S>(Vec3<S>::Zero(), Vec3<S>(nan, S(0), S(0))).exp(), Contains("NaN"));
   CHECK_NOTHROW(SE3<S>::fromMatrix(m));
 }
+
+}  // namespace SOMA_UNITY_ID

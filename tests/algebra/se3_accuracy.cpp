@@ -4,6 +4,8 @@
 // the log sweep of log_accuracy.hpp over θ ∈ (0, π].
 #include "lie_suite.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::test;
 
@@ -41,3 +43,5 @@ TEMPLATE_TEST_CASE("SE3 log sweep over 0 < theta <= pi: worst error a few ulp", 
   CHECK(r.worstUlps <= 8);
   CHECK(r.meanUlps <= 2);
 }
+
+}  // namespace SOMA_UNITY_ID

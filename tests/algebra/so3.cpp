@@ -4,6 +4,8 @@
 // rejection of bad input with a message naming the defect.
 #include "lie_suite.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::test;
 using Catch::Matchers::Contains;
@@ -121,3 +123,5 @@ TEMPLATE_TEST_CASE("SO3 rejects bad input with a message naming the defect", "[s
   CHECK_THROWS_WITH(rotationFromQuaternion(Quat<S>(S(0), S(0), S(0), S(0))),
                     Contains("zero quaternion"));
 }
+
+}  // namespace SOMA_UNITY_ID

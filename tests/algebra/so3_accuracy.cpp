@@ -3,6 +3,8 @@
 // and every analytic J_out / Jacobian against central differences on the manifold.
 #include "lie_suite.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::test;
 
@@ -28,3 +30,5 @@ TEMPLATE_TEST_CASE("SO3 analytic Jacobians agree with central differences on the
   auto& g = rng(47);
   for (const auto& smp : lie::samples<SO3<S>>(g, 20)) lie::checkJacobiansNumerically(smp, g);
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -8,6 +8,8 @@
 
 #include <vector>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using Catch::Matchers::Contains;
 
@@ -262,3 +264,5 @@ TEMPLATE_TEST_CASE("Study parameters reject bad input with a clear message", "[s
   bad(3, 0) = S(1) / S(2);
   REQUIRE_THROWS_WITH(StudyParameters<S>::fromMatrix(bad), Contains("last row"));
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -12,6 +12,8 @@
 #include <filesystem>
 #include <numbers>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 namespace {
 using namespace soma::render;
 constexpr double pi = std::numbers::pi;
@@ -171,3 +173,5 @@ TEST_CASE("render anti-aliasing cost", "[.bench]") {
       }
     }
 }
+
+}  // namespace SOMA_UNITY_ID

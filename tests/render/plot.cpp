@@ -7,6 +7,8 @@
 #include <cmath>
 #include <filesystem>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 namespace {
 using namespace soma::render;
 
@@ -208,3 +210,5 @@ TEST_CASE("plot: the legend goes to the chosen corner", "[render][plot]") {
     CHECK(it->at.x() < f.right);
   }
 }
+
+}  // namespace SOMA_UNITY_ID

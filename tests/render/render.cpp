@@ -12,6 +12,8 @@
 #include <string>
 #include <thread>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 // The expression throws `type` and its message contains `text` (Catch2 v2 checks these separately).
 #define CHECK_THROWS_CONTAINING(expr, type, text) \
   do {                                            \
@@ -431,3 +433,5 @@ TEST_CASE("render: parametricSurface's front is the side of f_u x f_v, whichever
       }
     }
 }
+
+}  // namespace SOMA_UNITY_ID

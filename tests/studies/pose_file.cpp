@@ -3,6 +3,8 @@
 
 #include "support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::studies;
 using Catch::Contains;
@@ -68,3 +70,5 @@ TEST_CASE("a rotation typed as doubles is accepted in mpfr, and taken exactly or
   CHECK_THROWS_WITH(parsePose<__float128>(R"({"quaternion": [1, 0, 0, 1e-2], "translation": [0,0,0]})", "p.json"),
                     Contains("not unit"));
 }
+
+}  // namespace SOMA_UNITY_ID

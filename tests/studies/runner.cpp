@@ -8,6 +8,8 @@
 #include <cmath>
 #include <limits>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::studies;
 
@@ -152,3 +154,5 @@ TEST_CASE("text helpers", "[report]") {
   CHECK(formatShort(std::nan("")) == "nan");
   CHECK(displayWidth("θ − π") == 5);
 }
+
+}  // namespace SOMA_UNITY_ID

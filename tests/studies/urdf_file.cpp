@@ -7,6 +7,8 @@
 
 #include <filesystem>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::studies;
 using Catch::Contains;
@@ -101,3 +103,5 @@ TEST_CASE("URDF: every defect is named", "[urdf]") {
       <mimic joint="j1"/></joint></robot>)", "m.urdf"),
                     Contains("joint \"j2\" mimics joint \"j1\""));
 }
+
+}  // namespace SOMA_UNITY_ID

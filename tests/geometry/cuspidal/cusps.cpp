@@ -10,6 +10,8 @@
 
 #include <cmath>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 
 namespace {
@@ -203,3 +205,5 @@ TEST_CASE("aspects: PUMA arm has 4, the cuspidal orthogonal arm 2", "[cuspidal]"
   for (int s : om.sign) pos += s > 0;
   CHECK(pos == 1);
 }
+
+}  // namespace SOMA_UNITY_ID

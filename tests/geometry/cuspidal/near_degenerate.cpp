@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 
 namespace {
@@ -115,3 +117,5 @@ TEST_CASE("near-degenerate: a1 = 1e-10 goes on to mpfr, s1 → 0 is detected too
   r1.alpha = 0.1;  // s1² = 0.01: fine
   CHECK_FALSE(cuspsIllConditioned(arm3RFrame(SerialRobot<double>::fromDH({r1, r2, r3}))));
 }
+
+}  // namespace SOMA_UNITY_ID

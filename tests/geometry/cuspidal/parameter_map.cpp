@@ -7,6 +7,8 @@
 #include "soma/algebra/errors.hpp"
 #include "support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 
 namespace {
@@ -75,3 +77,5 @@ TEST_CASE("parameter map: the base robot must be a 3R DH arm", "[cuspidal][map]"
   const ParameterAxis x = parseParameterAxis("a1:0.5:1:3"), y = parseParameterAxis("a2:0.5:1:3");
   CHECK_THROWS_WITH(cuspMap(two, x, y), Catch::Contains("has 2 joints"));
 }
+
+}  // namespace SOMA_UNITY_ID

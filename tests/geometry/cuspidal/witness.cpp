@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 
 namespace {
@@ -65,3 +67,5 @@ TEST_CASE("witness: a straight joint path across det J = 0 is rejected by the ch
   CHECK(pc.minSignedDet < 0);
   CHECK_FALSE(pc.certified);
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -8,6 +8,8 @@
 
 #include <cmath>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 
 namespace {
@@ -66,3 +68,5 @@ TEST_CASE("6R witness: bad input", "[cuspidal][6r]") {
   CHECK_THROWS_WITH(findWitness6R(SerialRobot<double>::fromDH({r, r, r, r})), Catch::Contains("has 4 joints"));
   CHECK_THROWS_WITH(findWitness6R(puma(), 0), Catch::Contains("at least 1"));
 }
+
+}  // namespace SOMA_UNITY_ID

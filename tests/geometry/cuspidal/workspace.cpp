@@ -10,6 +10,8 @@
 
 #include <cmath>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 
 namespace {
@@ -102,3 +104,5 @@ TEST_CASE("workspace: postures on opposite sides of det J = 0, bad input", "[cus
   out << 2, 0, 0;
   CHECK_THROWS_WITH(planAwayFromSingularities(limited, out, out, 0), Catch::Contains("outside the joint limits"));
 }
+
+}  // namespace SOMA_UNITY_ID

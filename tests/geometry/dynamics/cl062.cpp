@@ -7,6 +7,8 @@
 
 #include "../../support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using soma::test::rng;
 using soma::test::uniform;
@@ -134,3 +136,5 @@ TEMPLATE_TEST_CASE("free body: Cl(0,6,2) and 6x6 trajectories agree; drift of ea
   using std::pow;
   REQUIRE(dE <= pow(h * Om, 4) * Om * S(5) + S(100) * Tolerance<S>::identity());
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -5,6 +5,8 @@
 
 #include "../../support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 
 namespace {
@@ -59,3 +61,5 @@ TEMPLATE_TEST_CASE("free tumbling body (6x6): drift follows the order-4 bound of
   REQUIRE(dE1 <= apriori);
   REQUIRE(dP1 <= apriori);
 }
+
+}  // namespace SOMA_UNITY_ID

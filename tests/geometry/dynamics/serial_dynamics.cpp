@@ -7,6 +7,8 @@
 
 #include "serial_dynamics_support.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::test;
 
@@ -334,3 +336,5 @@ TEST_CASE("serial dynamics: singular posture and huge/small scales", "[dynamics]
   const DynVector<double> a = r.inverseDynamics(z, thd, thdd), b = r.inverseDynamicsClosedForm(z, thd, thdd);
   CHECK(maxAbs<double>(a - b) <= 1e-12 * maxAbs(a));
 }
+
+}  // namespace SOMA_UNITY_ID

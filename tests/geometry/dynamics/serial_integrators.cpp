@@ -13,6 +13,8 @@
 
 #include "serial_dynamics_support.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::test;
 
@@ -123,3 +125,5 @@ TEST_CASE("link inertia file: the PUMA 560 data parse; bad data is InvalidInput"
                   InvalidInput);
   CHECK_THROWS_AS(parseLinkInertias(R"({"joints": []})", "t"), InvalidInput);
 }
+
+}  // namespace SOMA_UNITY_ID

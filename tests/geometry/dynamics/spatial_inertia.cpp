@@ -5,6 +5,8 @@
 
 #include "../../support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using soma::test::rng;
 using soma::test::uniform;
@@ -105,3 +107,4 @@ TEST_CASE("spatial inertia: bad input is rejected with a message", "[dynamics]")
                     InvalidInput);
 }
 
+}  // namespace SOMA_UNITY_ID

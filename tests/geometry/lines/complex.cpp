@@ -4,6 +4,8 @@
 
 #include "../../support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using soma::test::rng;
 using soma::test::uniform;
@@ -124,3 +126,5 @@ TEMPLATE_TEST_CASE("Singular and infinite-pitch complexes, both sides of α·b =
   const Vec4<S> pinf = cz.nullPoint(Plane<S>{Vec3<S>(S(1), S(0), S(0)), S(-1)});
   REQUIRE(abs(pinf(0)) <= tol<S>() * pinf.norm());
 }
+
+}  // namespace SOMA_UNITY_ID

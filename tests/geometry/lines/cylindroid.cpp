@@ -5,6 +5,8 @@
 
 #include "../../support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using soma::test::rng;
 using soma::test::uniform;
@@ -119,3 +121,5 @@ TEMPLATE_TEST_CASE("Curvature axes: cubic surface, umbilic, saddle at infinity (
   const Vec6<S> fd = (rs.coords(S(1) + h) - rs.coords(S(1) - h)) / (S(2) * h);
   REQUIRE((fd - rs.derivative(S(1))).norm() <= S(100) * h * h);
 }
+
+}  // namespace SOMA_UNITY_ID

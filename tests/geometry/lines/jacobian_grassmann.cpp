@@ -4,6 +4,8 @@
 
 #include "../../support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using soma::test::rng;
 using soma::test::uniform;
@@ -94,3 +96,5 @@ TEMPLATE_TEST_CASE("Grassmannians: Plücker relations, dimension (GF-6.8)", "[li
   const Vec3<S> v = Vec3<S>(S(1), S(2), S(3)).cross(Vec3<S>(S(4), S(5), S(7)));
   REQUIRE(abs(p(5) - v(0)) + abs(-p(4) - v(1)) + abs(p(3) - v(2)) <= tol<S>());
 }
+
+}  // namespace SOMA_UNITY_ID

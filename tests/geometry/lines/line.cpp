@@ -4,6 +4,8 @@
 
 #include "../../support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using soma::test::rng;
 using soma::test::uniform;
@@ -119,3 +121,4 @@ TEMPLATE_TEST_CASE("SE(3) acts on lines by Ad = [[R,0],[TR,R]] (GF-6.4-adjoint-o
   }
 }
 
+}  // namespace SOMA_UNITY_ID

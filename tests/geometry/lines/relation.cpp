@@ -4,6 +4,8 @@
 
 #include "../../support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using soma::test::rng;
 using soma::test::uniform;
@@ -111,3 +113,5 @@ TEMPLATE_TEST_CASE("Lines far away and tiny (lengths 1e8, 1e-8)", "[lines][relat
     }
   }
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -5,6 +5,8 @@
 
 #include "../../support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using soma::test::rng;
 using soma::test::uniform;
@@ -134,3 +136,4 @@ TEMPLATE_TEST_CASE("Dual angle and common perpendicular by dual vectors agree wi
   REQUIRE_THROWS_AS(commonPerpendicularDual(x, y), InvalidInput);
 }
 
+}  // namespace SOMA_UNITY_ID

@@ -7,6 +7,8 @@
 #include "soma/algebra/study_parameters.hpp"
 #include "support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 
 namespace {
@@ -301,3 +303,5 @@ TEMPLATE_TEST_CASE("Stewart Newton polish reaches the rounding floor of the scal
   CHECK(stewartResidual<S>(P, h) <= Tolerance<S>::identity(64));
   CHECK((h.matrix() - pose.matrix()).norm() <= Tolerance<S>::identity(1u << 12));
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -3,6 +3,8 @@
 // sides of the switch and threshold.
 #include "pga_support.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::test;
 using namespace soma::test::pga;
@@ -65,3 +67,5 @@ TEMPLATE_TEST_CASE("pga line distance: nearly parallel lines on both sides of th
   }
   CHECK_THROWS_AS(distance(a, Line<S>(Vec3<S>::Zero(), Vec3<S>(S(1), S(0), S(0)))), InvalidInput);
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -3,6 +3,8 @@
 // sides of the switch and threshold.
 #include "pga_support.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::test;
 using namespace soma::test::pga;
@@ -38,3 +40,4 @@ TEMPLATE_TEST_CASE("pga contraction: the book's definition x⌋c = ½(xc − α(
   CHECK(abs(pp.distance() + x0.dot(l1.direction())) <= tol<S>());
 }
 
+}  // namespace SOMA_UNITY_ID

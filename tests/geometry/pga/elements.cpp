@@ -1,6 +1,8 @@
 // GF §10.1: the elements' norms and conjugates, normalisation, elements at infinity.
 #include "pga_support.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::test;
 using namespace soma::test::pga;
@@ -44,3 +46,4 @@ TEMPLATE_TEST_CASE("pga elements: conjugates and norms (GF §10.1)", "[pga][elem
   CHECK_THROWS_AS(Point<S>(S(1), Vec3<S>(S(0), std::numeric_limits<S>::quiet_NaN(), S(0))), InvalidInput);
 }
 
+}  // namespace SOMA_UNITY_ID

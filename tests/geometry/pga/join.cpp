@@ -5,6 +5,8 @@
 
 #include <Eigen/LU>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::test;
 using namespace soma::test::pga;
@@ -116,3 +118,5 @@ TEMPLATE_TEST_CASE("pga incidence: residuals against coordinates, both sides of 
   CHECK(coplanarityResidual(Point<S>(x0), Point<S>(y1), Point<S>(y2), Point<S>(x)) > S(1e-3));
   CHECK(collinearityResidual(Point<S>(x0), Point<S>(y1), Point<S>(Vec3<S>(S(3) * y1 - S(2) * x0))) <= tol<S>(64));
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -5,6 +5,8 @@
 
 #include <Eigen/LU>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::test;
 using namespace soma::test::pga;
@@ -101,3 +103,4 @@ TEMPLATE_TEST_CASE("pga meets: parallel, nearly parallel and coincident cases", 
                     Contains("share a line"));
 }
 
+}  // namespace SOMA_UNITY_ID

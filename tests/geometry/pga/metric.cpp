@@ -3,6 +3,8 @@
 // sides of the switch and threshold.
 #include "pga_support.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::test;
 using namespace soma::test::pga;
@@ -67,3 +69,4 @@ TEMPLATE_TEST_CASE("pga perpendiculars, angles, distances, projections, reflecti
   }
 }
 
+}  // namespace SOMA_UNITY_ID

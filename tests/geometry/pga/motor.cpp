@@ -2,6 +2,8 @@
 // SE3 in coordinates (SE3::act, SE3::adjoint).
 #include "pga_support.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::test;
 using namespace soma::test::pga;
@@ -45,3 +47,4 @@ TEMPLATE_TEST_CASE("pga motors: the sandwich hxh* against SE3 in coordinates", "
   }
 }
 
+}  // namespace SOMA_UNITY_ID

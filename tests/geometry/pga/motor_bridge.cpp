@@ -2,6 +2,8 @@
 // round trips; exp/log; composition; bad input.
 #include "pga_support.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::test;
 using namespace soma::test::pga;
@@ -87,3 +89,5 @@ TEMPLATE_TEST_CASE("pga motors: bad input", "[pga][motor]", float, double) {
   CHECK_THROWS_WITH(Motor<S>::rotationAbout(Line<S>(Vec3<S>(S(2), S(0), S(0)), Vec3<S>::Zero()), S(1)),
                     Contains("not a unit line"));
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -3,6 +3,8 @@
 // blades and on random elements; the book's worked example and its coordinate formulas.
 #include "pga_support.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::test;
 using namespace soma::test::pga;
@@ -59,3 +61,5 @@ TEMPLATE_TEST_CASE("pga shuffle: random elements, and the book's coordinate form
     CHECK(abs(shuffle(Line<S>(v, u), Line<S>(w, mu)) - (v.dot(mu) + u.dot(w))) <= tol<S>());
   }
 }
+
+}  // namespace SOMA_UNITY_ID

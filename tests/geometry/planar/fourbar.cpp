@@ -2,6 +2,8 @@
 #include "soma/geometry/planar/fourbar.hpp"
 #include "support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::planar;
 using soma::test::rng;
@@ -280,3 +282,5 @@ TEST_CASE("coupler invariants at every crank angle: Euler–Savary equals the cu
   }
   CHECK(worst <= 1e-10);
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -3,6 +3,8 @@
 #include "soma/geometry/planar/instant_invariants.hpp"
 #include "support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::planar;
 using soma::test::rng;
@@ -309,3 +311,5 @@ TEST_CASE("inflection circle by sampled paths: coupler points whose path curvatu
   }
   CHECK(found >= 2);
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -4,6 +4,8 @@
 
 #include <iostream>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using namespace soma::planar;
 using soma::test::rng;
@@ -215,3 +217,5 @@ TEST_CASE("synthesis: bad input", "[planar][synthesis][extremes]") {
   CHECK(int(pairs.size()) + cc == 4);
   for (const auto& p : pairs) CHECK(p.residual <= 1e-13);
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -9,6 +9,8 @@
 #include <iostream>
 #include <map>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using soma::test::rng;
 using soma::test::uniform;
@@ -256,3 +258,5 @@ TEMPLATE_TEST_CASE("identification of degenerate and trivial systems", "[screws]
   bad(2, 1) = std::numeric_limits<S>::quiet_NaN();
   CHECK_THROWS_AS(identifyScrewSystem(bad), InvalidInput);
 }
+
+}  // namespace SOMA_UNITY_ID

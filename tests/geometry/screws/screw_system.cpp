@@ -5,6 +5,8 @@
 
 #include "../../support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using soma::test::rng;
 using soma::test::uniform;
@@ -132,3 +134,5 @@ TEMPLATE_TEST_CASE("wedge: Plücker coordinates scale by det M under a basis cha
     CHECK((wm - w * detm).template lpNorm<Eigen::Infinity>() <= Tolerance<S>::identity(256) * S(8));
   }
 }
+
+}  // namespace SOMA_UNITY_ID

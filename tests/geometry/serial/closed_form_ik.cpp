@@ -4,6 +4,8 @@
 #include "soma/algebra/errors.hpp"
 #include "support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using soma::test::rng;
 using soma::test::uniform;
@@ -280,3 +282,5 @@ TEST_CASE("closed form: bad robots and methods", "[serial][ik][errors]") {
   CHECK_THROWS_WITH(classifyRobot(SerialRobot<double>::fromDH(rows)), Catch::Contains("prismatic"));
   CHECK(!parseIkMethod("newton"));
 }
+
+}  // namespace SOMA_UNITY_ID

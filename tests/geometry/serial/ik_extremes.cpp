@@ -12,6 +12,8 @@
 #include <cmath>
 #include <string>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using soma::test::uniform;
 
@@ -282,3 +284,5 @@ TEST_CASE("IK extremes: random joints on a robot with 16 real postures", "[seria
   // Manocha & Canny's pose has 16 (GF-11.5.1-6R-sixteen); random poses of this arm reach 16 too.
   CHECK(sixteen >= 1);
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -4,6 +4,8 @@
 #include "soma/algebra/errors.hpp"
 #include "support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using soma::test::rng;
 using soma::test::uniform;
@@ -175,3 +177,5 @@ TEST_CASE("serial: lengths 1e-8 and 1e8 scale the pose exactly", "[serial][fk][e
     CHECK(robot.lengthScale() / s < 10);
   }
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -6,6 +6,8 @@
 
 #include <cmath>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 
 namespace {
@@ -168,3 +170,5 @@ TEST_CASE("general 6R: bad input is rejected", "[sixr][input]") {
   m = T.matrix();
   CHECK_NOTHROW(solveGeneral6R(rb, m));
 }
+
+}  // namespace SOMA_UNITY_ID

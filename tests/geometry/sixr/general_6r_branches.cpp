@@ -8,6 +8,8 @@
 #include <cmath>
 #include <string>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 
 namespace {
@@ -143,3 +145,5 @@ TEST_CASE("general 6R branches: float escalates to double when its eigenproblem 
   }
   CHECK(escalated >= 1);
 }
+
+}  // namespace SOMA_UNITY_ID

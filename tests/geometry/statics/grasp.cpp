@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using soma::test::rng;
 using soma::test::uniform;
@@ -341,3 +343,5 @@ TEMPLATE_TEST_CASE("GF-12.5 object motion at a curved contact: first order, then
   CHECK(classifyObjectMotion<S>(kx, ky, mk(0, 0, 0, 1, 0, -rk / 16)) == ContactMotion::Penetrates);
   CHECK_THROWS_AS(classifyObjectMotion<S>(kx, ky, mk(0, 0, 0, 0, 0, 0)), InvalidInput);
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -8,6 +8,8 @@
 
 #include <limits>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using soma::test::rng;
 using soma::test::uniformVec;
@@ -137,3 +139,5 @@ TEMPLATE_TEST_CASE("GF-12.4 eigenscrews of a stiffness: K s = λ Q₀ s, Q₀-or
   CHECK_THROWS_AS(stiffnessEigenscrews<S>(bad), InvalidInput);
   CHECK_THROWS_AS(stiffnessEigenscrews<S>(Mat6<S>(-K)), InvalidInput);
 }
+
+}  // namespace SOMA_UNITY_ID

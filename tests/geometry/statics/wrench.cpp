@@ -8,6 +8,8 @@
 
 #include <limits>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using soma::test::rng;
 using soma::test::uniformVec;
@@ -123,3 +125,4 @@ TEMPLATE_TEST_CASE("GF-12.3 wrist sensor: the gauge wrenches sum to the correcte
   CHECK_THROWS_AS(wristSensorSignals<S>(S(-1), target), InvalidInput);
 }
 
+}  // namespace SOMA_UNITY_ID

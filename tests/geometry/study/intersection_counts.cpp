@@ -4,6 +4,8 @@
 #include "soma/geometry/study/intersection_ring.hpp"
 #include "support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using soma::test::rng;
 using soma::test::uniform;
@@ -118,3 +120,5 @@ TEMPLATE_TEST_CASE("The book's S-S link quadric and 2R three-plane hold on motio
     CHECK((twoRevoluteEquations<S>(l, alpha) * z).cwiseAbs().maxCoeff() <= tol * (S(1) + l));
   }
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -4,6 +4,8 @@
 
 #include "support/scalars.hpp"
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using std::abs;
 using std::cos;
@@ -59,3 +61,5 @@ TEMPLATE_TEST_CASE("oriented flags: orthonormality threshold on both sides, e1 =
   CHECK(near.isSoma());
   CHECK(abs(near.soma().translation().norm() * t / S(4) - S(1)) <= S(1) / S(1000000));
 }
+
+}  // namespace SOMA_UNITY_ID

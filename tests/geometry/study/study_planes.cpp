@@ -4,6 +4,8 @@
 
 #include <Eigen/QR>
 
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
 using namespace soma;
 using soma::test::rng;
 using soma::test::uniformVec;
@@ -162,3 +164,5 @@ TEST_CASE("StudyPlane: bad input is named", "[study][plane]") {
   CHECK_THROWS_AS(StudyPlane<double>::fromSpan(P), InvalidInput);
   CHECK_THROWS_WITH(StudyPlane<double>::planarMotions(Vec3<double>(0, 0, 2)), Catch::Matchers::Contains("not a unit vector"));
 }
+
+}  // namespace SOMA_UNITY_ID

@@ -119,5 +119,5 @@ StudyResult runStudy(const Study& s, ScalarKind scalar, const std::filesystem::p
 ///   SOMA_STUDY({.id = "GF-2.1-U1-unit-complex", .title = ..., .source = "GF §2.1",
 ///               .chapter = "GF 2 — Lie groups", .scalarGeneric = true, .run = [](Context& c){...}});
 #define SOMA_STUDY(...)                                                                   \
-  static const ::soma::studies::Registrar SOMA_STUDY_CONCAT(somaStudyRegistrar_, __LINE__){ \
+  static const ::soma::studies::Registrar SOMA_STUDY_CONCAT(somaStudyRegistrar_, __COUNTER__){ \
       ::soma::studies::Study __VA_ARGS__}
