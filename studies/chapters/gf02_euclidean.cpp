@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace soma::studies {
+namespace soma::studies::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 using namespace gf23;
@@ -587,4 +587,4 @@ SOMA_STUDY({.id = "GF-2.5.3-active-passive",
             .run = [](Context& c) { activePassive<double>(c); }});
 
 }  // namespace
-}  // namespace soma::studies
+}  // namespace soma::studies::SOMA_UNITY_ID

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace soma::studies {
+namespace soma::studies::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 using namespace gf23;
@@ -395,4 +395,4 @@ SOMA_STUDY({.id = "GF-2.1-GL-SL-dimensions",
             .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { glSlDimensions<S>(c); }); }});
 
 }  // namespace
-}  // namespace soma::studies
+}  // namespace soma::studies::SOMA_UNITY_ID

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace soma::studies {
+namespace soma::studies::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 using namespace gf23;
@@ -633,4 +633,4 @@ SOMA_STUDY({.id = "GF-2.3-accidental-isomorphisms",
             .run = [](Context& c) { accidentalIsomorphisms<double>(c); }});
 
 }  // namespace
-}  // namespace soma::studies
+}  // namespace soma::studies::SOMA_UNITY_ID

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace soma::studies {
+namespace soma::studies::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 using namespace gf23;
@@ -488,4 +488,4 @@ SOMA_STUDY({.id = "GF-3.3-projective-group",
             .run = [](Context& c) { projectiveGroup<double>(c); }});
 
 }  // namespace
-}  // namespace soma::studies
+}  // namespace soma::studies::SOMA_UNITY_ID

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace soma::studies {
+namespace soma::studies::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 using namespace gf23;
@@ -424,4 +424,4 @@ SOMA_STUDY({.id = "GF-3.4-pencil-mobius",
             .run = [](Context& c) { pencilMobius<double>(c); }});
 
 }  // namespace
-}  // namespace soma::studies
+}  // namespace soma::studies::SOMA_UNITY_ID

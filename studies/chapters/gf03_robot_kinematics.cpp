@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace soma::studies {
+namespace soma::studies::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 using namespace gf23;
@@ -332,4 +332,4 @@ SOMA_STUDY({.id = "GF-3.7-tool-frame-and-relative-moves",
             .run = [](Context& c) { toolFrame<double>(c); }});
 
 }  // namespace
-}  // namespace soma::studies
+}  // namespace soma::studies::SOMA_UNITY_ID

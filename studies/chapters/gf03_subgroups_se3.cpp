@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace soma::studies {
+namespace soma::studies::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 using namespace gf23;
@@ -434,4 +434,4 @@ SOMA_STUDY({.id = "GF-3.6-reuleaux-lower-pairs",
             .run = [](Context& c) { reuleaux<double>(c); }});
 
 }  // namespace
-}  // namespace soma::studies
+}  // namespace soma::studies::SOMA_UNITY_ID

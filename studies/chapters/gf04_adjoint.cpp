@@ -1,7 +1,7 @@
 // Studies of GF chapter 4, §4.2: the adjoint representations of SO(3) and SE(3).
 #include "gf04_common.hpp"
 
-namespace soma::studies::gf04 {
+namespace soma::studies::gf04::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 // ---- GF §4.2, GF-4.2-adjoint-SO3 ----------------------------------------------------------
@@ -96,4 +96,4 @@ GF04_STUDY("GF-4.2-adjoint-SE3", "Adjoint representation of SE(3): [[R, 0], [TR,
            "GF §4.2", adjointSE3);
 
 }  // namespace
-}  // namespace soma::studies::gf04
+}  // namespace soma::studies::gf04::SOMA_UNITY_ID

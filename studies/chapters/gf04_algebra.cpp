@@ -4,7 +4,7 @@
 
 #include <Eigen/LU>
 
-namespace soma::studies::gf04 {
+namespace soma::studies::gf04::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 // ---- GF §4.1, GF-4.1-tangent-algebras (erratum E4.1) --------------------------------------
@@ -178,4 +178,4 @@ GF04_STUDY("GF-4.1-hat-map", "The hat map ω ↦ Ω, Ωx = ω × x; the ε-tenso
            "GF §4.1", hatMap);
 
 }  // namespace
-}  // namespace soma::studies::gf04
+}  // namespace soma::studies::gf04::SOMA_UNITY_ID

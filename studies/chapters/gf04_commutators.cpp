@@ -4,7 +4,7 @@
 
 #include <Eigen/LU>
 
-namespace soma::studies::gf04 {
+namespace soma::studies::gf04::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 // ---- GF §4.3, GF-4.3-bracket-structure-constants ------------------------------------------
@@ -252,4 +252,4 @@ GF04_STUDY("GF-4.3-se3-commutators-ad",
            se3CommutatorsAd);
 
 }  // namespace
-}  // namespace soma::studies::gf04
+}  // namespace soma::studies::gf04::SOMA_UNITY_ID

@@ -2,7 +2,7 @@
 // (dexp), spatial and body, as a series, an integral and the closed forms.
 #include "gf04_common.hpp"
 
-namespace soma::studies::gf04 {
+namespace soma::studies::gf04::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 // ---- GF §4.5.2, GF-4.5.2-dexp-hausdorff (erratum E4.9) -----------------------------------------
@@ -89,4 +89,4 @@ GF04_STUDY("GF-4.5.2-dexp-hausdorff",
            "GF §4.5.2", dexpHausdorff);
 
 }  // namespace
-}  // namespace soma::studies::gf04
+}  // namespace soma::studies::gf04::SOMA_UNITY_ID

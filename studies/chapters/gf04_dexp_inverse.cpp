@@ -2,7 +2,7 @@
 // velocity) and SE(3) (velocity screw), by the book's idempotent calculus.
 #include "gf04_common.hpp"
 
-namespace soma::studies::gf04 {
+namespace soma::studies::gf04::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 // ---- GF §4.5.3, GF-4.5.3-so3-dexp-and-inverse --------------------------------------------------
@@ -121,4 +121,4 @@ GF04_STUDY("GF-4.5.4-se3-dexp-and-inverse", "Velocity screw: closed-form SE(3) d
            "GF §4.5.4", se3DexpInverse);
 
 }  // namespace
-}  // namespace soma::studies::gf04
+}  // namespace soma::studies::gf04::SOMA_UNITY_ID

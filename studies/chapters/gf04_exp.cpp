@@ -2,7 +2,7 @@
 // idempotents.
 #include "gf04_common.hpp"
 
-namespace soma::studies::gf04 {
+namespace soma::studies::gf04::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 // ---- GF §4.4, GF-4.4-exp-basics (erratum E4.4) ---------------------------------------------
@@ -184,4 +184,4 @@ GF04_STUDY("GF-4.4.1-so3-idempotents",
            "GF §4.4.1", so3Idempotents);
 
 }  // namespace
-}  // namespace soma::studies::gf04
+}  // namespace soma::studies::gf04::SOMA_UNITY_ID

@@ -5,7 +5,7 @@
 
 #include "soma/render/render.hpp"
 
-namespace soma::studies::gf04 {
+namespace soma::studies::gf04 {  // not per-file (SOMA_UNITY_ID): it defines functions other chapter files call
 
 namespace rd = soma::render;
 

@@ -4,7 +4,7 @@
 
 #include <Eigen/LU>
 
-namespace soma::studies::gf04 {
+namespace soma::studies::gf04::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 /// The SU(2) image of a quaternion w + xi + yj + zk under i ↦ 2σx, j ↦ 2σy, k ↦ 2σz (GF §4.6).
@@ -129,4 +129,4 @@ GF04_STUDY("GF-4.6-ideals-semisimplicity",
            "GF §4.6", idealsSemisimplicity);
 
 }  // namespace
-}  // namespace soma::studies::gf04
+}  // namespace soma::studies::gf04::SOMA_UNITY_ID

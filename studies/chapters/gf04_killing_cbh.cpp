@@ -4,7 +4,7 @@
 
 #include <Eigen/LU>
 
-namespace soma::studies::gf04 {
+namespace soma::studies::gf04::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 // ---- GF §4.7, GF-4.7-killing-so3 (erratum E4.11) ------------------------------------------------
@@ -161,4 +161,4 @@ GF04_STUDY("GF-4.8-so3-closed-form-bch",
            "GF §4.8", so3ClosedFormBch);
 
 }  // namespace
-}  // namespace soma::studies::gf04
+}  // namespace soma::studies::gf04::SOMA_UNITY_ID

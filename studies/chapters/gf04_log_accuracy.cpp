@@ -11,7 +11,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace soma::studies::gf04 {
+namespace soma::studies::gf04::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 struct Sample {
@@ -238,4 +238,4 @@ SOMA_STUDY({.id = "GF-4.4-log-accuracy",
             .scalarGeneric = false,
             .run = [](Context& c) { logAccuracy(c); }});
 
-}  // namespace soma::studies::gf04
+}  // namespace soma::studies::gf04::SOMA_UNITY_ID

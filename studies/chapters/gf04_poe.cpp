@@ -2,7 +2,7 @@
 // derivatives of joint screws.
 #include "gf04_common.hpp"
 
-namespace soma::studies::gf04 {
+namespace soma::studies::gf04::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 /// A serial arm of joint screws (home position), revolute s = (ω; q × ω) or prismatic (0; d).
@@ -181,4 +181,4 @@ GF04_STUDY("GF-4.5.1-jacobian-and-screw-derivatives",
            "GF §4.5.1", jacobianScrewDerivatives);
 
 }  // namespace
-}  // namespace soma::studies::gf04
+}  // namespace soma::studies::gf04::SOMA_UNITY_ID

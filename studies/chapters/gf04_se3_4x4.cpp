@@ -3,9 +3,11 @@
 #include "gf04_common.hpp"
 
 namespace soma::studies::gf04 {
-
 void helixFigure(Context& c);          // gf04_figures.cpp
 void interpolationFigure(Context& c);  // gf04_figures.cpp
+}  // namespace soma::studies::gf04
+
+namespace soma::studies::gf04::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 
 namespace {
 
@@ -158,4 +160,4 @@ GF04_STUDY("GF-4.4.2-se3-log-4x4",
            "GF §4.4.2", se3Log4x4);
 
 }  // namespace
-}  // namespace soma::studies::gf04
+}  // namespace soma::studies::gf04::SOMA_UNITY_ID

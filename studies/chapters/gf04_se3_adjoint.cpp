@@ -2,7 +2,7 @@
 // (quintic, P/N calculus, Hermite interpolation; erratum E4.8).
 #include "gf04_common.hpp"
 
-namespace soma::studies::gf04 {
+namespace soma::studies::gf04::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 
 namespace {
 
@@ -163,4 +163,4 @@ GF04_STUDY("GF-4.4.3-adjoint-log",
            "GF §4.4.3", adjointLog);
 
 }  // namespace
-}  // namespace soma::studies::gf04
+}  // namespace soma::studies::gf04::SOMA_UNITY_ID

@@ -2,7 +2,7 @@
 // Lagrange polynomial).
 #include "gf04_common.hpp"
 
-namespace soma::studies::gf04 {
+namespace soma::studies::gf04::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 // ---- GF §4.4.1, GF-4.4.1-rodrigues ---------------------------------------------------------
@@ -152,4 +152,4 @@ GF04_STUDY("GF-4.4.1-so3-log-polynomial", "so(3) log as a Lagrange polynomial in
            "GF §4.4.1", so3LogPolynomial);
 
 }  // namespace
-}  // namespace soma::studies::gf04
+}  // namespace soma::studies::gf04::SOMA_UNITY_ID

@@ -16,7 +16,7 @@
 
 #include <cmath>
 
-namespace soma::studies {
+namespace soma::studies::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 using S = double;
@@ -460,4 +460,4 @@ SOMA_STUDY({.id = "SOMA-5.2.3-witness-6r",
             .source = "GF §5.2.3; Wenger", .chapter = kChapter, .run = witness6RStudy});
 
 }  // namespace
-}  // namespace soma::studies
+}  // namespace soma::studies::SOMA_UNITY_ID

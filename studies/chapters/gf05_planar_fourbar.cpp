@@ -2,7 +2,7 @@
 // velocity, angular acceleration) and coupler curves with their instantaneous invariants.
 #include "gf05_planar_common.hpp"
 
-namespace soma::studies::gf05p {
+namespace soma::studies::gf05p::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 // GF §5.4, GF-5.4-fourbar-loop
@@ -311,4 +311,4 @@ SOMA_STUDY({.id = "GF-5.4-fourbar-angular-acceleration", .title = "Angular accel
 SOMA_STUDY({.id = "GF-5.4-coupler-curves-and-invariants", .title = "Coupler curves (degree 6) and their invariants along the cycle",
             .source = "GF §5.4", .chapter = kChapter, .scalarGeneric = false, .run = couplerCurves});
 
-}  // namespace soma::studies::gf05p
+}  // namespace soma::studies::gf05p::SOMA_UNITY_ID

@@ -3,7 +3,7 @@
 // printed and passing corrected.
 #include "gf05_planar_common.hpp"
 
-namespace soma::studies::gf05p {
+namespace soma::studies::gf05p::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 struct Setup {
@@ -399,4 +399,4 @@ SOMA_STUDY({.id = "GF-5.3.5-burmester-cubic", .title = "The second (5-point cont
 SOMA_STUDY({.id = "GF-5.3.5-burmester-count", .title = "Burmester points: 9 = 2 + 3 + 4", .source = "GF §5.3.5", .chapter = kChapter,
             .scalarGeneric = false, .run = burmesterCount});
 
-}  // namespace soma::studies::gf05p
+}  // namespace soma::studies::gf05p::SOMA_UNITY_ID

@@ -2,7 +2,7 @@
 // closed-form BCH, the circle conditions (C1)–(C4) and the centre of curvature.
 #include "gf05_planar_common.hpp"
 
-namespace soma::studies::gf05p {
+namespace soma::studies::gf05p::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 using M3 = Mat3<double>;
@@ -180,4 +180,4 @@ SOMA_STUDY({.id = "GF-5.3-circle-derivative-conditions", .title = "Derivatives o
 SOMA_STUDY({.id = "GF-5.3-curvature-centre", .title = "Centre of curvature from (C1), (C2)", .source = "GF §5.3",
             .chapter = kChapter, .scalarGeneric = false, .run = curvatureCentreStudy});
 
-}  // namespace soma::studies::gf05p
+}  // namespace soma::studies::gf05p::SOMA_UNITY_ID

@@ -4,7 +4,7 @@
 
 #include <random>
 
-namespace soma::studies::gf05p {
+namespace soma::studies::gf05p {  // not per-file (SOMA_UNITY_ID): it defines functions other chapter files call
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include <map>
 #include <random>
 
-namespace soma::studies {
+namespace soma::studies::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 using S = double;
@@ -348,4 +348,4 @@ SOMA_STUDY({.id = "GF-5.2.2-finger-puma-example", .title = "The finger / PUMA ar
             .source = "GF §5.2.2", .chapter = kChapter, .run = fingerExample});
 
 }  // namespace
-}  // namespace soma::studies
+}  // namespace soma::studies::SOMA_UNITY_ID

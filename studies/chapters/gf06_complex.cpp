@@ -2,7 +2,7 @@
 // reciprocal-screw inverse Jacobian of a 6R arm, Grassmannians (double).
 #include "gf06_common.hpp"
 
-namespace soma::studies::gf06 {
+namespace soma::studies::gf06::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 // GF §6.6, GF-6.6-linear-complex
@@ -218,4 +218,4 @@ GF6("GF-6.8-grassmannian-homogeneous", "Grassmannians as homogeneous spaces: dim
 #undef GF6
 
 }  // namespace
-}  // namespace soma::studies::gf06
+}  // namespace soma::studies::gf06::SOMA_UNITY_ID

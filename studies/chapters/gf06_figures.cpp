@@ -7,7 +7,7 @@
 #include "soma/render/plot.hpp"
 #include "soma/render/render.hpp"
 
-namespace soma::studies::gf06 {
+namespace soma::studies::gf06 {  // not per-file (SOMA_UNITY_ID): it defines functions other chapter files call
 namespace {
 
 namespace rd = soma::render;

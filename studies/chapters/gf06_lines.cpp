@@ -4,7 +4,7 @@
 
 #include <Eigen/SVD>
 
-namespace soma::studies::gf06 {
+namespace soma::studies::gf06::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 // GF §6.1, GF-6.1-point-line-distance
@@ -367,4 +367,4 @@ GF6("GF-6.4-directed-lines", "Directed lines double-cover lines", "GF §6.4", di
 #undef GF6
 
 }  // namespace
-}  // namespace soma::studies::gf06
+}  // namespace soma::studies::gf06::SOMA_UNITY_ID

@@ -2,7 +2,7 @@
 // and the curvature-axis surfaces (double). Figures are in gf06_figures.cpp.
 #include "gf06_common.hpp"
 
-namespace soma::studies::gf06 {
+namespace soma::studies::gf06::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 // GF §6.5.1, GF-6.5.1-regulus
@@ -242,4 +242,4 @@ GF6("GF-6.5.3-curvature-axes", "Axes of curvature of a surface point form a cubi
 #undef GF6
 
 }  // namespace
-}  // namespace soma::studies::gf06
+}  // namespace soma::studies::gf06::SOMA_UNITY_ID

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <random>
 
-namespace soma::studies::gf08 {
+namespace soma::studies::gf08::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 constexpr const char* kChapter = "GF 8 — Screw systems";
@@ -821,4 +821,4 @@ GF08("GF-8.4.4-3-system-invariants", "Table 8.4 (E8.9), IC modulus (E8.10), modu
 GF08("GF-8.4.4-example-bracket-3-system", "The bracket-generated 3-system is IIB with pitch p", "GF §8.4.4", bracketExample);
 GF08("GF-8.5-union-intersection", "Union, intersection, shuffle product and de Morgan (E8.11)", "GF §8.5", unionIntersection);
 
-}  // namespace soma::studies::gf08
+}  // namespace soma::studies::gf08::SOMA_UNITY_ID

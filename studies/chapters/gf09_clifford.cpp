@@ -6,7 +6,7 @@
 #include "soma/algebra/clifford/quadratic_form.hpp"
 #include "soma/algebra/so3.hpp"
 
-namespace soma::studies::gf09 {
+namespace soma::studies::gf09::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 // ---- GF §9.1, GF-9.1-clifford-definition-signature ------------------------------------------
@@ -376,4 +376,4 @@ void exteriorProduct(Context& c) {
 GF09_STUDY("GF-9.1-exterior-product", "The exterior product inside the Clifford algebra", "GF §9.1", exteriorProduct);
 
 }  // namespace
-}  // namespace soma::studies::gf09
+}  // namespace soma::studies::gf09::SOMA_UNITY_ID

@@ -7,7 +7,7 @@
 
 #include "soma/algebra/study_parameters.hpp"
 
-namespace soma::studies::gf09 {
+namespace soma::studies::gf09::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 // ---- GF §9.2, GF-9.2-euclidean-group-Cl0n1 ---------------------------------------------------
@@ -457,4 +457,4 @@ void expLog(Context& c) {
 GF09_STUDY("GF-9.3-exp-log", "Exponential of a dual-angle screw; translation formula", "GF §9.3", expLog);
 
 }  // namespace
-}  // namespace soma::studies::gf09
+}  // namespace soma::studies::gf09::SOMA_UNITY_ID

@@ -7,7 +7,7 @@
 #include "soma/render/plot.hpp"
 #include "soma/render/render.hpp"
 
-namespace soma::studies::gf06 {
+namespace soma::studies::gf06::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 using D = DualNumber<double>;
@@ -346,4 +346,4 @@ GF9("GF-9.4-fig9.1-line-sweeps-regulus", "Fig. 9.1: a line sweeps out a cylindri
 #undef GF9
 
 }  // namespace
-}  // namespace soma::studies::gf06
+}  // namespace soma::studies::gf06::SOMA_UNITY_ID

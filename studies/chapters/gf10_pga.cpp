@@ -15,7 +15,7 @@
 #include <Eigen/LU>
 #include <random>
 
-namespace soma::studies::gf10 {
+namespace soma::studies::gf10::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 using namespace soma::pga;
@@ -665,4 +665,4 @@ GF10_STUDY("GF-10.2.4-common-perpendicular", "λ = −2(s⌋s)s + (s⌋e1e2e3�
            });
 
 }  // namespace
-}  // namespace soma::studies::gf10
+}  // namespace soma::studies::gf10::SOMA_UNITY_ID

@@ -8,7 +8,7 @@
 
 #include <random>
 
-namespace soma::studies::gf10 {
+namespace soma::studies::gf10::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 using namespace soma::pga;
@@ -156,4 +156,4 @@ SOMA_STUDY({.id = "soma-pga-plucker-crosscheck",
             .run = pluckerCrossCheck});
 
 }  // namespace
-}  // namespace soma::studies::gf10
+}  // namespace soma::studies::gf10::SOMA_UNITY_ID

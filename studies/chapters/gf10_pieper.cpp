@@ -10,7 +10,7 @@
 #include <map>
 #include <random>
 
-namespace soma::studies {
+namespace soma::studies::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 using S = double;
@@ -268,4 +268,4 @@ SOMA_STUDY({.id = "GF-10.3.2-fig10.2-T3", .title = "Fig. 10.2: all postures of t
             .source = "GF §10.3.2, Fig. 10.2", .chapter = kChapter, .run = t3Figure});
 
 }  // namespace
-}  // namespace soma::studies
+}  // namespace soma::studies::SOMA_UNITY_ID

@@ -11,7 +11,7 @@
 
 #include <random>
 
-namespace soma::studies::gf11flags {
+namespace soma::studies::gf11flags::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 using S = double;
@@ -522,4 +522,4 @@ GF11F_STUDY("GF-11.5-cell-decomposition", "The cell decomposition of the Study q
             "GF §11.5", cellDecomposition);
 
 }  // namespace
-}  // namespace soma::studies::gf11flags
+}  // namespace soma::studies::gf11flags::SOMA_UNITY_ID

@@ -17,7 +17,7 @@
 #include <array>
 #include <cmath>
 
-namespace soma::studies {
+namespace soma::studies::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 using S = double;
@@ -270,4 +270,4 @@ SOMA_STUDY({.id = "GF-11.5.1-6R-sixteen",
             .source = "GF §11.5.1", .chapter = kChapter, .run = sixteen});
 
 }  // namespace
-}  // namespace soma::studies
+}  // namespace soma::studies::SOMA_UNITY_ID

@@ -21,7 +21,7 @@
 #include <sstream>
 #include <unistd.h>
 
-namespace soma::studies::gf11phc {
+namespace soma::studies::gf11phc::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 using S = double;
@@ -265,4 +265,4 @@ SOMA_STUDY({.id = "GF-11.5.3-tripod-wrist-eight",
             .run = tripodWrist});
 
 }  // namespace
-}  // namespace soma::studies::gf11phc
+}  // namespace soma::studies::gf11phc::SOMA_UNITY_ID

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <random>
 
-namespace soma::studies::gf11pointed {
+namespace soma::studies::gf11pointed::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 using S = double;
@@ -82,4 +82,4 @@ SOMA_STUDY({.id = "GF-11.3-pointed-line-clifford",
             .run = pointedLine});
 
 }  // namespace
-}  // namespace soma::studies::gf11pointed
+}  // namespace soma::studies::gf11pointed::SOMA_UNITY_ID

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <random>
 
-namespace soma::studies::gf11soma {
+namespace soma::studies::gf11soma::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 constexpr const char* kChapter = "GF 11 — The Study quadric";
@@ -372,4 +372,4 @@ GF11S_STUDY("GF-11.1-SO4-is-whole-study-quadric", "SO(4) is the whole Study quad
 GF11S_STUDY("GF-11.1-saletan-contraction", "σ² = 1/r², r → ∞: SO(4) contracts to SE(3)", saletan);
 
 }  // namespace
-}  // namespace soma::studies::gf11soma
+}  // namespace soma::studies::gf11soma::SOMA_UNITY_ID

@@ -15,7 +15,7 @@
 #include <algorithm>
 #include <random>
 
-namespace soma::studies::gf11stewart {
+namespace soma::studies::gf11stewart::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 using S = double;
@@ -459,4 +459,4 @@ SOMA_STUDY({.id = "SOMA-11.5.4-stewart-speed-accuracy",
             .run = speedAccuracy});
 
 }  // namespace
-}  // namespace soma::studies::gf11stewart
+}  // namespace soma::studies::gf11stewart::SOMA_UNITY_ID

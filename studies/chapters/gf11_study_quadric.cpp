@@ -11,7 +11,7 @@
 
 #include <random>
 
-namespace soma::studies::gf11 {
+namespace soma::studies::gf11::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 using S = double;
@@ -422,4 +422,4 @@ GF11_STUDY("GF-11.5.3-SS-quadric-at-infinity", "Every S–S variety contains the
 GF11_STUDY("GF-11.5.4-stewart-leg-quadric", "The Stewart leg equation as a quadric in Study parameters", "GF §11.5.4",
            stewartLegQuadric);
 
-}  // namespace soma::studies::gf11
+}  // namespace soma::studies::gf11::SOMA_UNITY_ID

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <random>
 
-namespace soma::studies::gf12 {
+namespace soma::studies::gf12::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 constexpr const char* kChapter = "GF 12 — Statics";
@@ -181,4 +181,4 @@ GF12("GF-12-fig-12.2", "Fig. 12.2: the four-beam wrist force sensor", "GF §12.3
 GF12("GF-12-fig-12.4", "Fig. 12.4: fingers on a rigid body — normals, and friction cones", "GF §12.5–12.6", fig124);
 #undef GF12
 
-}  // namespace soma::studies::gf12
+}  // namespace soma::studies::gf12::SOMA_UNITY_ID

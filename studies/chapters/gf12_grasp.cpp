@@ -10,7 +10,7 @@
 #include <functional>
 #include <random>
 
-namespace soma::studies::gf12 {
+namespace soma::studies::gf12::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 constexpr const char* kChapter = "GF 12 — Statics";
@@ -494,4 +494,4 @@ GF12("GF-12.6-planar-two-finger-grasp", "Planar two-finger grasps: each contact 
 GF12("GF-12.6-polyhedral-approximation", "Linearised friction cones: the LP answer converges like 1/k²", "GF §12.6", polyhedral);
 #undef GF12
 
-}  // namespace soma::studies::gf12
+}  // namespace soma::studies::gf12::SOMA_UNITY_ID

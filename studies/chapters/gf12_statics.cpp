@@ -12,7 +12,7 @@
 #include <cmath>
 #include <random>
 
-namespace soma::studies::gf12 {
+namespace soma::studies::gf12::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 constexpr const char* kChapter = "GF 12 — Statics";
@@ -285,4 +285,4 @@ GF12("GF-12.4-joint-torques-to-wrench", "𝒲_totᵀ J = (w₁…w₆): the end-
 GF12("GF-12.4-stiffness-compliance", "Stiffness (J⁻¹)ᵀKJ⁻¹, compliance JK⁻¹Jᵀ and the eigenscrews", "GF §12.4", stiffness);
 #undef GF12
 
-}  // namespace soma::studies::gf12
+}  // namespace soma::studies::gf12::SOMA_UNITY_ID

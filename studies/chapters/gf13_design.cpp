@@ -7,7 +7,7 @@
 
 #include <Eigen/Eigenvalues>
 
-namespace soma::studies::gf13 {
+namespace soma::studies::gf13::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 SerialDynamics<double> twoR(const V6& s1, const V6& s2, const SpatialInertia<double>& l1, const SpatialInertia<double>& l2,
@@ -435,4 +435,4 @@ GF13("GF-13.6.3-flat-coordinates", "Flat coordinates φ(θ): φ̈ = K⁻ᵀτ; B
 GF13("GF-13.6.3-gaussian-curvature-2R", "Gaussian curvature of a 2R inertia metric (errata 11, 12)", "GF §13.6.3", gaussian);
 #undef GF13
 
-}  // namespace soma::studies::gf13
+}  // namespace soma::studies::gf13::SOMA_UNITY_ID

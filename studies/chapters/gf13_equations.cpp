@@ -7,7 +7,7 @@
 
 #include <Eigen/Eigenvalues>
 
-namespace soma::studies::gf13 {
+namespace soma::studies::gf13::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 void timeDerivatives(Context& ctx) {
@@ -322,4 +322,4 @@ GF13("GF-13.2.3-payload", "Payload increments A^p, B^p, C^p (erratum 1)", "GF §
 GF13("GF-13.3-recursive-newton-euler", "The recursive Newton–Euler algorithm in home coordinates", "GF §13.3", rnea);
 #undef GF13
 
-}  // namespace soma::studies::gf13
+}  // namespace soma::studies::gf13::SOMA_UNITY_ID

@@ -10,7 +10,7 @@
 
 #include <Eigen/Eigenvalues>
 
-namespace soma::studies::gf13 {
+namespace soma::studies::gf13::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 namespace rd = soma::render;
@@ -112,4 +112,4 @@ void figures(Context& ctx) {
 SOMA_STUDY({.id = "GF-13-figures", .title = "Derived figure: the principal screws of inertia of a box (the chapter has none)",
             .source = "GF §13.1", .chapter = kChapter, .scalarGeneric = false, .run = figures});
 
-}  // namespace soma::studies::gf13
+}  // namespace soma::studies::gf13::SOMA_UNITY_ID

@@ -2,7 +2,7 @@
 // Lagrange's, canonical (symplectic) point transformations and Poisson brackets (erratum 10).
 #include "gf13_common.hpp"
 
-namespace soma::studies::gf13 {
+namespace soma::studies::gf13::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 void hamiltonian(Context& ctx) {
@@ -171,4 +171,4 @@ GF13("GF-13.5-canonical-symplectic", "Point transformations with π' = K⁻ᵀπ
 GF13("GF-13.5-poisson-bracket", "Poisson brackets: Jacobi identity, [θ, h], [π, h], dh/dt = θ̇ᵀτ (erratum 10)", "GF §13.5", poisson);
 #undef GF13
 
-}  // namespace soma::studies::gf13
+}  // namespace soma::studies::gf13::SOMA_UNITY_ID

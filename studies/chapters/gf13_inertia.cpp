@@ -9,7 +9,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 
-namespace soma::studies::gf13 {
+namespace soma::studies::gf13::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 struct Cloud {
@@ -339,4 +339,4 @@ GF13("GF-13.1-principal-screw-commutators", "Commutators of the principal screws
      commutators);
 #undef GF13
 
-}  // namespace soma::studies::gf13
+}  // namespace soma::studies::gf13::SOMA_UNITY_ID

@@ -8,7 +8,7 @@
 
 #include <Eigen/Eigenvalues>
 
-namespace soma::studies::gf13 {
+namespace soma::studies::gf13::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 namespace rd = soma::render;
@@ -420,4 +420,4 @@ GF13("GF-13.4.3-small-oscillations", "Small oscillations: Q = Hessian of E_P, no
 GF13("GF-13.4.3-harmonic-screws", "Harmonic screws are A- and Q-orthogonal (erratum 16)", "GF §13.4.3", harmonicScrews);
 #undef GF13
 
-}  // namespace soma::studies::gf13
+}  // namespace soma::studies::gf13::SOMA_UNITY_ID

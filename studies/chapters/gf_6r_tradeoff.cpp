@@ -14,7 +14,7 @@
 #include <cstdio>
 #include <random>
 
-namespace soma::studies {
+namespace soma::studies::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 struct Case {
@@ -240,4 +240,4 @@ SOMA_STUDY({.id = "SOMA-6R-speed-accuracy",
             .scalarGeneric = false,
             .run = [](Context& c) { tradeoff(c); }});
 
-}  // namespace soma::studies
+}  // namespace soma::studies::SOMA_UNITY_ID

@@ -6,7 +6,7 @@
 
 #include "soma/algebra/clifford/multivector.hpp"
 
-namespace soma::studies::sb {
+namespace soma::studies::sb::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 using namespace soma::cl062;
 
@@ -296,4 +296,4 @@ SB_STUDY("SB-4-shuffle-example-cl031", "e₁e₂ ∨ e₃e = 1 in Cl(0,3,1)", "S
 SB_STUDY("SB-4-shuffle-example-cl062", "a₁a₂a₃a ∨ a₃a₁e₁e₂e₃e = a₃a₁", "SB §4", shuffleExampleCl062);
 #undef SB_STUDY
 
-}  // namespace soma::studies::sb
+}  // namespace soma::studies::sb::SOMA_UNITY_ID

@@ -5,7 +5,7 @@
 
 #include "soma/algebra/clifford/multivector.hpp"
 
-namespace soma::studies::sb {
+namespace soma::studies::sb::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 using namespace soma::cl062;
 
@@ -226,4 +226,4 @@ SB_STUDY("SB-5-translated-inertia-example", "Diagonal inertia translated by t_x 
 SB_STUDY("SB-5-kinetic-energy", "E_k = ½ s̄ ∨ (N ∧ s)", "SB §5", kineticEnergyStudy);
 #undef SB_STUDY
 
-}  // namespace soma::studies::sb
+}  // namespace soma::studies::sb::SOMA_UNITY_ID

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace soma::studies::sb {
+namespace soma::studies::sb::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 using namespace soma::cl062;
 
@@ -312,4 +312,4 @@ SB_STUDY("SB-6-E-form", "N ∧ ṡ + ½((s̄N − Ns̄) ∧ s) = W E", "SB §6",
 SB_STUDY("SB-7-claims", "Sym² of the adjoint inside Cl(0,6,2); stiffness; even subalgebra", "SB §7", claims);
 #undef SB_STUDY
 
-}  // namespace soma::studies::sb
+}  // namespace soma::studies::sb::SOMA_UNITY_ID

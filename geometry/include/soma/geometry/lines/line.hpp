@@ -6,6 +6,7 @@
 // Lines are homogeneous (s and λs, λ ≠ 0, are the same line; λ < 0 reverses a directed line).
 // Lines at infinity are (0; n): the line at infinity of the planes with normal n.
 // The Cl(0,3,1) form lives in geometry/pga; screw systems in geometry/screws.
+#include "soma/algebra/reciprocal_product.hpp"
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/se3.hpp"
 #include "soma/algebra/tolerance.hpp"
@@ -31,11 +32,6 @@ template <class S> Mat6<S> kleinFormQinf() {
 /// screw of pitch h, so its zero set (off ω = 0) is the screws of pitch p. GF §6.4, GF-6.4-pitch-quadrics
 template <class S> Mat6<S> pitchQuadric(const S& p) { return p * kleinFormQinf<S>() + kleinFormQ0<S>(); }
 
-/// Reciprocal product ω_a·v_b + v_a·ω_b of two 6-vectors (lines or screws). Two lines meet
-/// (possibly at infinity) iff it is 0. GF §6.1, GF-6.1-meet-condition
-template <class S> S reciprocalProduct(const Vec6<S>& a, const Vec6<S>& b) {
-  return a.template head<3>().dot(b.template tail<3>()) + a.template tail<3>().dot(b.template head<3>());
-}
 
 /// Value of the Klein quadric ω·v (= ½ sᵀQ₀s); zero exactly on lines. GF §6.2, GF-6.2-klein-quadric
 template <class S> S kleinValue(const Vec6<S>& s) {

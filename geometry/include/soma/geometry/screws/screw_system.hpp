@@ -5,6 +5,7 @@
 // generators with a rank decision from Tolerance<S>::rank(). Reciprocity uses the Klein form
 // Q₀ = [[0, I], [I, 0]]; pitch uses Q∞ = [[−2I, 0], [0, 0]] (GF §6.4, §8.1).
 #include "soma/algebra/errors.hpp"
+#include "soma/algebra/reciprocal_product.hpp"
 #include "soma/algebra/se3.hpp"
 #include "soma/algebra/tolerance.hpp"
 
@@ -29,10 +30,6 @@ template <class S> Mat6<S> infinityForm() {
   Mat6<S> q = Mat6<S>::Zero();
   q.template topLeftCorner<3, 3>() = -S(2) * Mat3<S>::Identity();
   return q;
-}
-/// Reciprocal product sᵀQ₀r. GF §8.1, GF-8.1-reciprocal-system
-template <class S> S reciprocalProduct(const Vec6<S>& s, const Vec6<S>& r) {
-  return s.template head<3>().dot(r.template tail<3>()) + r.template head<3>().dot(s.template tail<3>());
 }
 /// Lie bracket of twists, [(ω₁, v₁), (ω₂, v₂)] = (ω₁×ω₂, ω₁×v₂ − ω₂×v₁). GF §4.3
 template <class S> Vec6<S> screwBracket(const Vec6<S>& a, const Vec6<S>& b) {
