@@ -370,6 +370,7 @@ GF11S_STUDY("GF-11.1-spin3xspin3", "Spin(4) = Spin(3) × Spin(3): h = ½(g1 + g2
 GF11S_STUDY("GF-11.1-SO4-is-whole-study-quadric", "SO(4) is the whole Study quadric, the exceptional 3-plane included",
             so4WholeQuadric);
 GF11S_STUDY("GF-11.1-saletan-contraction", "σ² = 1/r², r → ∞: SO(4) contracts to SE(3)", saletan);
+#undef GF11S_STUDY
 
 }  // namespace
 }  // namespace soma::studies::gf11soma::SOMA_UNITY_ID

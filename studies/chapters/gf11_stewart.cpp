@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <numbers>
 #include <random>
 
 namespace soma::studies::gf11stewart::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
@@ -443,6 +444,116 @@ void speedAccuracy(Context& c) {
   }
 }
 
+// GF §11.5.2, GF-11-fig-11.2: in a 6-3 platform two legs share a platform joint; with their base
+// joints they form a rigid triangle that can only turn about the line through the two base
+// joints — a revolute joint there and a spherical joint at the apex (an R–S pair). The apex
+// therefore lies on a circle about that axis, of radius the triangle's height.
+void triangleFigure(Context& c) {
+  std::mt19937_64 g(112);
+  SE3<S> pose;
+  auto P = randomPlatform(g, &pose);
+  const std::array<Vec3<S>, 3> t3{P.platform[0], P.platform[2], P.platform[4]};
+  for (int i = 0; i < 6; ++i) P.platform[i] = t3[((i + 1) / 2) % 3];  // as in sixThree: legs (1, 2) share a joint
+  P.legs = stewartLegLengths<S>(P, pose);
+  const Vec3<S> p1 = P.base[1], p2 = P.base[2], apex = pose.act(P.platform[1]);
+  c.checkResidual("legs 2 and 3 end at the same platform joint", (pose.act(P.platform[2]) - apex).norm(), 0.0);
+  const S L1 = P.legs[1], L2 = P.legs[2], d = (p2 - p1).norm();
+  const Vec3<S> u = (p2 - p1) / d;
+  const Vec3<S> foot = p1 + u * u.dot(apex - p1);
+  const S r = (apex - foot).norm();
+  // Heron: the height of the triangle (L1, L2, d) over the side d.
+  const S sp = (L1 + L2 + d) / 2;
+  const S height = 2 * std::sqrt(sp * (sp - L1) * (sp - L2) * (sp - d)) / d;
+  c.checkResidual("radius of the apex circle = height of the leg triangle over the base side (Heron)", std::abs(r - height),
+                  Tolerance<S>::identity(64) * (L1 + L2 + d));
+  // Turning the triangle about the axis keeps both leg lengths: the R–S pair.
+  const Vec3<S> e1 = (apex - foot) / r, e2 = u.cross(e1);
+  double worst = 0;
+  std::vector<Eigen::Vector3d> circle;
+  for (int k = 0; k < 72; ++k) {
+    const double phi = 2 * std::numbers::pi * k / 72;
+    const Vec3<S> x = foot + r * (std::cos(phi) * e1 + std::sin(phi) * e2);
+    worst = std::max({worst, std::abs((x - p1).norm() - L1), std::abs((x - p2).norm() - L2)});
+    circle.push_back(x);
+  }
+  c.checkResidual("every point of the circle keeps both leg lengths (72 angles)", worst, Tolerance<S>::identity(64) * (L1 + L2));
+  // And the apex positions with both leg lengths are only that circle: a point off the axis plane
+  // through the foot changes one length to first order.
+  const Vec3<S> off = apex + Tolerance<S>::sqrtEpsilon() * u;
+  c.checkEqual("moving the apex along the axis by √ε changes a leg length to first order", 1,
+               std::abs((off - p1).norm() - L1) + std::abs((off - p2).norm() - L2) >
+                       Tolerance<S>::identity(1024) * (L1 + L2)
+                   ? 1
+                   : 0);
+  if (!c.makeFigures()) return;
+  rd::Scene scene;
+  scene.title = "GF Fig. 11.2: two legs of a 6-3 platform meet at one platform joint: an R-S pair";
+  std::vector<Eigen::Vector3d> base(P.base.begin(), P.base.end());
+  rd::Tube bt;
+  bt.p = base;
+  bt.closed = true;
+  bt.radius = 0.012;
+  bt.c = rd::palette::darkGrey;
+  scene.add(bt);
+  std::vector<Eigen::Vector3d> tri;
+  for (const auto& q : t3) tri.push_back(pose.act(q));
+  rd::Mesh plate;
+  plate.v = tri;
+  plate.tri.push_back(Eigen::Vector3i(0, 1, 2));
+  plate.c = rd::palette::orange.withAlpha(0.35f);
+  scene.add(plate);
+  for (int i = 0; i < 6; ++i) {
+    rd::Tube leg;
+    leg.p = {base[i], pose.act(P.platform[i])};
+    const bool pair = i == 1 || i == 2;
+    leg.radius = pair ? 0.022 : 0.008;
+    leg.c = pair ? rd::palette::blue : rd::palette::lightGrey;
+    scene.add(leg);
+  }
+  rd::Tube axis;  // the equivalent revolute axis through the two base joints
+  axis.p = {p1 - 0.35 * (p2 - p1), p2 + 0.35 * (p2 - p1)};
+  axis.radius = 0.01;
+  axis.c = rd::palette::vermillion;
+  scene.add(axis);
+  rd::Tube ring;  // where the apex can go: the circle about the axis
+  ring.p = circle;
+  ring.closed = true;
+  ring.radius = 0.007;
+  ring.c = rd::palette::orange;
+  scene.add(ring);
+  rd::Tube h;  // the triangle's height: the radius of that circle
+  h.p = {foot, apex};
+  h.radius = 0.005;
+  h.c = rd::palette::darkGrey;
+  scene.add(h);
+  scene.add(rd::Points{{p1, p2}, rd::palette::vermillion, 0.035});
+  scene.add(rd::Points{{apex}, rd::palette::blue, 0.045});
+  const auto label = [&](const Eigen::Vector3d& at, const std::string& text) {
+    rd::Label l;
+    l.at = at;
+    l.text = text;
+    l.pixelHeight = 20;
+    scene.add(l);
+  };
+  label(p1 + 0.7 * (p2 - p1) + Eigen::Vector3d(0, 0, -0.12), "revolute axis");
+  label(apex + Eigen::Vector3d(0, 0, 0.08), "spherical joint (shared platform joint)");
+  label(circle[36] + Eigen::Vector3d(0, 0, -0.08), "circle of the apex");
+  const int w = 1200, hgt = 900;
+  rd::RenderOptions opt;
+  opt.width = w;
+  opt.height = hgt;
+  rd::FitOptions fo;
+  fo.width = w;
+  fo.height = hgt;
+  opt.camera = rd::Camera::fit(scene, Eigen::Vector3d(0.35, 1.0, -0.45), fo);
+  const std::string f = "GF-11-fig-11.2.png";
+  rd::renderPng(scene, opt, c.figurePath(f));
+  c.figure(f, fmt::format("Two legs (blue) of a 6-3 platform share a platform joint; with the line through their "
+                          "base joints (red) they form a rigid triangle that turns about that line: a revolute joint "
+                          "and a spherical joint. The apex moves on the orange circle, of radius the triangle's "
+                          "height {:.4f} (Heron).", height));
+}
+
 #define GF11S_STUDY(ID, TITLE, SOURCE, FN) \
   SOMA_STUDY({.id = ID, .title = TITLE, .source = SOURCE, .chapter = kChapter, .scalarGeneric = false, .run = FN})
 
@@ -451,6 +562,9 @@ GF11S_STUDY("GF-11.5.4-stewart-forty",
             "GF §11.5.4", stewartForty);
 GF11S_STUDY("GF-11.5.2-6-3-stewart-sixteen", "6-3 Stewart platform: 16 postures (the other 24 paths end singular)",
             "GF §11.5.2", sixThree);
+GF11S_STUDY("GF-11-fig-11.2", "Fig. 11.2: two legs of a 6-3 platform sharing a joint form an R-S pair", "GF §11.5.2",
+            triangleFigure);
+#undef GF11S_STUDY
 SOMA_STUDY({.id = "SOMA-11.5.4-stewart-speed-accuracy",
             .title = "Stewart-Gough forward kinematics: every method × scalar, time, worst residual, completeness",
             .source = "GF §11.5.4",
