@@ -1,4 +1,5 @@
 // Witness search for cuspidal 6R robots with OMPL (see witness6r.hpp).
+#include "ompl_setup.hpp"
 #include "soma/geometry/cuspidal/witness6r.hpp"
 
 #include "soma/algebra/errors.hpp"
@@ -28,13 +29,7 @@ namespace og = ompl::geometric;
 
 constexpr double kPi = 3.14159265358979323846;
 
-void quietOmpl() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
-    ompl::RNG::setSeed(20261130);
-  });
-}
+using detail::quietOmpl;  // ompl_setup.hpp
 
 bool limitedJoint(const SerialJoint<double>& j) {
   return std::isfinite(j.lower) && std::isfinite(j.upper) && j.upper - j.lower < 2 * kPi;

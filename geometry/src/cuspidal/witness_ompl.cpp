@@ -1,4 +1,5 @@
 // Witness paths of cuspidality planned with OMPL (the only TU that includes OMPL headers).
+#include "ompl_setup.hpp"
 #include "soma/geometry/cuspidal/witness.hpp"
 
 #include "soma/geometry/serial/closed_form_ik.hpp"
@@ -22,13 +23,7 @@ namespace og = ompl::geometric;
 
 constexpr double kPi = 3.14159265358979323846;
 
-void quietOmpl() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
-    ompl::RNG::setSeed(20261130);  // reproducible plans
-  });
-}
+using detail::quietOmpl;  // ompl_setup.hpp
 
 /// Plan from a to b in SO(2)³ keeping sign·det J ≥ margin. Empty when no path was found in time.
 std::vector<Eigen::Vector3d> plan(const DetJSeries& dj, const Eigen::Vector3d& a, const Eigen::Vector3d& b,

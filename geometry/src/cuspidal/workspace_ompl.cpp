@@ -1,4 +1,5 @@
 // Workspace maps and singularity-avoiding plans with OMPL (the second TU that includes OMPL).
+#include "ompl_setup.hpp"
 #include "soma/geometry/cuspidal/workspace.hpp"
 
 #include "soma/algebra/errors.hpp"
@@ -25,13 +26,7 @@ namespace og = ompl::geometric;
 
 constexpr double kPi = 3.14159265358979323846;
 
-void quietOmpl() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
-    ompl::RNG::setSeed(20261130);  // reproducible samples and plans (a no-op if witness_ompl.cpp seeded first)
-  });
-}
+using detail::quietOmpl;  // ompl_setup.hpp
 
 /// The joint space: SO(2) for an unlimited revolute joint, an interval for a limited one.
 std::shared_ptr<ob::CompoundStateSpace> jointSpace(const SerialRobot<double>& robot) {
