@@ -3,6 +3,7 @@
 // det J and the posture, the revolute-joint exponential, the 3R arm's quartic, θ2 recovery
 // (E5.6), the elbow manipulator's 8 postures, and the finger/PUMA example (E5.4–E5.5).
 #include "soma/geometry/serial/closed_form_ik.hpp"
+#include "soma/studies/example_robots.hpp"
 #include "soma/studies/study.hpp"
 
 #include <fmt/format.h>
@@ -272,15 +273,7 @@ void theta2Recovery(Context& c) {
 
 // GF §5.2.1, GF-5.2.1-elbow-pieper: PUMA-like elbow manipulator, 8 postures.
 void elbowPieper(Context& c) {
-  std::vector<DHRow<S>> rows(6);
-  const S h = pi<S>() / 2;
-  rows[0] = {JointType::Revolute, 0, h, 0, 0};
-  rows[1] = {JointType::Revolute, 0.4318, 0, 0, 0};
-  rows[2] = {JointType::Revolute, 0.0203, -h, 0.15005, 0};
-  rows[3] = {JointType::Revolute, 0, h, 0.4318, 0};
-  rows[4] = {JointType::Revolute, 0, -h, 0, 0};
-  rows[5] = {JointType::Revolute, 0, 0, 0.05625, 0};
-  const auto robot = SerialRobot<S>::fromDH(rows);
+  const auto robot = puma560Robot<S>();
   std::mt19937_64 g(510);
   int eight = 0, max = 0;
   double worst = 0;

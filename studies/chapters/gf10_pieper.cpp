@@ -3,6 +3,7 @@
 // closing remark on singularities, and Fig. 10.2 (all postures of the T³ for one pose).
 #include "soma/geometry/serial/closed_form_ik.hpp"
 #include "soma/render/render.hpp"
+#include "soma/studies/example_robots.hpp"
 #include "soma/studies/study.hpp"
 
 #include <fmt/format.h>
@@ -28,17 +29,6 @@ SerialRobot<S> t3Robot(double l1 = 0.9, double l2 = 0.7, double l3 = 0.25) {
   return SerialRobot<S>::fromPOE(js, SE3<S>(SO3<S>(), Vec3<S>((l1 + l2 + l3) * k)), "T3");
 }
 
-SerialRobot<S> puma560() {
-  std::vector<DHRow<S>> rows(6);
-  const S h = pi<S>() / 2;
-  rows[0] = {JointType::Revolute, 0, h, 0, 0};
-  rows[1] = {JointType::Revolute, 0.4318, 0, 0, 0};
-  rows[2] = {JointType::Revolute, 0.0203, -h, 0.15005, 0};
-  rows[3] = {JointType::Revolute, 0, h, 0.4318, 0};
-  rows[4] = {JointType::Revolute, 0, -h, 0, 0};
-  rows[5] = {JointType::Revolute, 0, 0, 0.05625, 0};
-  return SerialRobot<S>::fromDH(rows, DHConvention::Standard, SE3<S>(), SE3<S>(), "PUMA 560");
-}
 
 JointVector<S> randomQ(std::mt19937_64& g, int n) {
   std::uniform_real_distribution<double> u(-3, 3);
@@ -93,7 +83,7 @@ void recordSweep(Context& c, const std::string& what, const Sweep& s, int maxCou
 
 // GF §10.3, GF-10.3-pieper-theorem
 void pieperTheorem(Context& c) {
-  const Sweep t3 = sweep(t3Robot(), 200, 101, 8), pm = sweep(puma560(), 200, 102, 8);
+  const Sweep t3 = sweep(t3Robot(), 200, 101, 8), pm = sweep(puma560Robot<S>(), 200, 102, 8);
   recordSweep(c, "T³ (axes 2-4 parallel)", t3, 8);
   recordSweep(c, "PUMA 560 (axes 4-6 meet)", pm, 8);
   c.checkEqual("T³: 8 postures occur", 1, t3.counts.count(8) ? 1 : 0);
@@ -169,7 +159,7 @@ void t3Example(Context& c) {
 
 // GF §10.3.3, GF-10.3.3-PUMA (E10.9: a4a5a6 = a3*a2*a1* k)
 void pumaExample(Context& c) {
-  const auto robot = puma560();
+  const auto robot = puma560Robot<S>();
   const auto tri = findPieperTriple(robot);
   c.checkEqual("PUMA 560: axes 4-6 meet (Pieper triple found at joint 4)", 4, tri.first + 1);
   const Sweep s = sweep(robot, 300, 104, 8);

@@ -7,6 +7,7 @@
 #include "soma/geometry/statics/robot_statics.hpp"
 #include "soma/geometry/statics/wrench.hpp"
 #include "soma/geometry/statics/wrist_sensor.hpp"
+#include "soma/studies/example_robots.hpp"
 #include "soma/studies/study.hpp"
 
 #include <cmath>
@@ -37,17 +38,6 @@ template <class M> long long detail_rank(const M& m) { return wrenchSpan<double>
 bool recordFails(Context& c, const std::string& name, const std::string& erratum, double residual, double tol) {
   return c.record(name + " [as printed]", "fails (erratum " + erratum + ")", "residual " + toString(residual, 6),
                   residual, tol, std::isfinite(residual) && residual > tol);
-}
-SerialRobot<double> puma560() {
-  std::vector<DHRow<double>> rows(6);
-  const double h = pi<double>() / 2;
-  rows[0] = {JointType::Revolute, 0, h, 0, 0};
-  rows[1] = {JointType::Revolute, 0.4318, 0, 0, 0};
-  rows[2] = {JointType::Revolute, 0.0203, -h, 0.15005, 0};
-  rows[3] = {JointType::Revolute, 0, h, 0.4318, 0};
-  rows[4] = {JointType::Revolute, 0, -h, 0, 0};
-  rows[5] = {JointType::Revolute, 0, 0, 0.05625, 0};
-  return SerialRobot<double>::fromDH(rows, DHConvention::Standard, SE3<double>(), SE3<double>(), "PUMA 560");
 }
 /// The displacement screw of the tool between two poses, to first order: log(T₁ T₀⁻¹) (spatial).
 V6 spatialDisplacement(const SE3<double>& t0, const SE3<double>& t1) { return (t1 * t0.inverse()).log().coeffs(); }
@@ -178,7 +168,7 @@ void wristSensor(Context& c) {
 // ---- §12.4 --------------------------------------------------------------------------------------
 void jointTorques(Context& c) {
   auto g = std::mt19937_64(1241);
-  const auto robot = puma560();
+  const auto robot = puma560Robot<double>();
   double vw = 0, inv = 0, fd = 0, links = 0;
   for (int i = 0; i < 50; ++i) {
     JointVector<double> q(6);
@@ -225,7 +215,7 @@ void jointTorques(Context& c) {
 
 void stiffness(Context& c) {
   auto g = std::mt19937_64(1242);
-  const auto robot = puma560();
+  const auto robot = puma560Robot<double>();
   JointVector<double> q(6);
   q << 0.3, -0.5, 0.7, 0.2, 1.1, -0.4;
   const ScrewColumns<double> J = robot.spatialJacobian(q);

@@ -6,6 +6,7 @@
 #include "soma/geometry/dynamics/robot_dynamics.hpp"
 #include "soma/geometry/dynamics/serial_dynamics.hpp"
 #include "soma/geometry/dynamics/spatial_inertia.hpp"
+#include "soma/studies/example_robots.hpp"
 #include "soma/studies/study.hpp"
 
 #include <cmath>
@@ -125,21 +126,10 @@ inline double maxAbs(const DV& v) { return v.cwiseAbs().maxCoeff(); }
 inline double maxAbs(const DM& v) { return v.cwiseAbs().maxCoeff(); }
 
 /// The PUMA 560 (standard DH) with the Armstrong–Khatib–Burdick inertias of puma560_dynamics.json.
-inline SerialRobot<double> pumaKinematics() {
-  std::vector<DHRow<double>> rows(6);
-  const double h = pi<double>() / 2;
-  rows[0] = {JointType::Revolute, 0, h, 0, 0};
-  rows[1] = {JointType::Revolute, 0.4318, 0, 0, 0};
-  rows[2] = {JointType::Revolute, 0.0203, -h, 0.15005, 0};
-  rows[3] = {JointType::Revolute, 0, h, 0.4318, 0};
-  rows[4] = {JointType::Revolute, 0, -h, 0, 0};
-  rows[5] = {JointType::Revolute, 0, 0, 0.05625, 0};
-  return SerialRobot<double>::fromDH(rows, DHConvention::Standard, SE3<double>(), SE3<double>(), "PUMA 560");
-}
 inline std::filesystem::path robotsDir() {
   return std::filesystem::path(__FILE__).parent_path().parent_path() / "robots";
 }
 inline std::vector<SpatialInertia<double>> pumaLinks() { return readLinkInertias(robotsDir() / "puma560_dynamics.json"); }
-inline SerialDynamics<double> puma(double grav = 9.81) { return serialDynamicsOf(pumaKinematics(), pumaLinks(), grav); }
+inline SerialDynamics<double> puma(double grav = 9.81) { return serialDynamicsOf(puma560Robot<double>(), pumaLinks(), grav); }
 
 }  // namespace soma::studies::gf13

@@ -165,7 +165,7 @@ void generalisedInertia(Context& ctx) {
   // link 1's mass and transverse moments are torque-neutral (the robot file's stand-in values)
   auto links = pumaLinks();
   links[0] = SpatialInertia<double>(25.0, V3::Zero(), M3(V3(2.0, 0.35, 3.0).asDiagonal()));
-  const SerialDynamics<double> p2 = serialDynamicsOf(pumaKinematics(), links, 9.81);
+  const SerialDynamics<double> p2 = serialDynamicsOf(puma560Robot<double>(), links, 9.81);
   double diff = 0;
   for (int t = 0; t < 20; ++t) {
     const DV a = rjoints(g, 6, -3, 3), b = rjoints(g, 6), c = rjoints(g, 6);
