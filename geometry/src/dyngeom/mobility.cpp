@@ -9,21 +9,18 @@ namespace soma {
 namespace {
 template <class S> Vec6<S> br(const Vec6<S>& a, const Vec6<S>& b) { return SE3Tangent<S>(a).ad() * b; }
 
-/// Orthonormal basis of the span of the columns of M (6×N, any N), by the eigen-decomposition of
-/// M Mᵀ: eigenvalues λ = σ², kept when σ > Tolerance::rank()·σ_max.
+/// Orthonormal basis of the span of the columns of M (6×N, any N), from the thin SVD of Mᵀ
+/// (Mᵀ = UΣVᵀ, so the column space of M is spanned by the columns of V with σ > Tolerance::rank()·σ_max).
 template <class S> ScrewMatrix<S> spanBasis(const DgMatrix<S>& M) {
-  using std::sqrt;
   if (M.cols() == 0) return ScrewMatrix<S>(6, 0);
-  const detail::SmallMat<S> G = M * M.transpose();
-  std::vector<S> vals;
-  detail::SmallMat<S> vecs;
-  detail::smallSymEigen<S>(G, vals, vecs);
-  if (!(vals[0] > S(0))) return ScrewMatrix<S>(6, 0);
-  const S smax = sqrt(vals[0]);
+  detail::SmallMat<S> u, v;
+  std::vector<S> sig;
+  detail::smallSvd<S>(detail::SmallMat<S>(M.transpose()), u, sig, v);
+  if (sig.empty() || !(sig[0] > S(0))) return ScrewMatrix<S>(6, 0);
   int r = 0;
-  for (const S& l : vals)
-    if (l > S(0) && sqrt(l) > Tolerance<S>::rank() * S(64) * smax) ++r;
-  return ScrewMatrix<S>(vecs.leftCols(r));
+  for (const S& x : sig)
+    if (x > S(64) * Tolerance<S>::rank() * sig[0]) ++r;
+  return ScrewMatrix<S>(v.leftCols(r));
 }
 template <class S> DgMatrix<S> columns(const std::vector<Vec6<S>>& s) {
   DgMatrix<S> M(6, Eigen::Index(s.size()));
@@ -156,15 +153,15 @@ template <class S> LoopTrace<S> traceLoop(const std::vector<Vec6<S>>& screws, co
   LoopTrace<S> out;
   DgVector<S> th = DgVector<S>::Zero(n);
   out.path.push_back(th);
-  auto kernel = [&](const DgVector<S>& t, int& dim) {
+  auto kernel = [&](const DgVector<S>& t, int& dim) {  // null space of J(θ) from its thin SVD
     const ScrewMatrix<S> J = geo.screws(t);
-    std::vector<S> vals;
-    detail::SmallMat<S> vecs;
-    detail::smallSymEigen<S>(detail::SmallMat<S>(J.transpose() * J), vals, vecs);
-    dim = 0;
-    for (const S& l : vals)
-      if (!(sqrt(l > S(0) ? l : S(0)) > S(1024) * Tolerance<S>::rank() * sqrt(vals[0]))) ++dim;
-    return DgVector<S>(vecs.col(n - 1));
+    detail::SmallMat<S> u, v;
+    std::vector<S> sig;
+    detail::smallSvd<S>(detail::SmallMat<S>(J), u, sig, v);
+    dim = int(J.cols()) - int(sig.size());
+    for (const S& x : sig)
+      if (!(x > S(64) * Tolerance<S>::rank() * sig[0])) ++dim;
+    return DgVector<S>(v.col(v.cols() - 1));
   };
   int dim = 0;
   DgVector<S> dir = kernel(th, dim);
