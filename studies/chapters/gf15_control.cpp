@@ -28,12 +28,12 @@ void geodesicLaw(Context& ctx) {
   const V6 X = geo.screws(s.th0) * s.td0;
   GeodesicController<double> c;
   const auto run = simulateGeodesicControl<double>(s.robot, c, DV(), s.th0, s.td0, 0.002, 1000, 50);
-  double drift = 0, pose = 0;
+  double drift0 = 0, pose = 0;
   for (const auto& smp : run) {
-    drift = std::max(drift, (smp.twist - X).cwiseAbs().maxCoeff());
+    drift0 = std::max(drift0, (smp.twist - X).cwiseAbs().maxCoeff());
     pose = std::max(pose, (smp.pose.matrix() - SE3Tangent<double>(V6(smp.t * X)).exp().compose(run.front().pose).matrix()).cwiseAbs().maxCoeff());
   }
-  ctx.checkResidual("τ = (B − AΓ)θ̇θ̇ + C, plant of ch. 13 (g = 9.81), RK4 2 s: max |q̇₆(t) − q̇₆(0)|", drift, 1e-9);
+  ctx.checkResidual("τ = (B − AΓ)θ̇θ̇ + C, plant of ch. 13 (g = 9.81), RK4 2 s: max |q̇₆(t) − q̇₆(0)|", drift0, 1e-9);
   ctx.checkResidual("the end effector follows ρ(t) = e^{tX}ρ(0), a helix of pitch " + toString(X.head<3>().dot(X.tail<3>()) / X.head<3>().squaredNorm(), 4), pose, 1e-9);
   // the same law with the printed gravity sign of ch. 13 (C_i = +s_iᵀN̄_ig, ch13 erratum 1): gravity doubled
   DV th = s.th0, v = s.td0;
@@ -42,13 +42,19 @@ void geodesicLaw(Context& ctx) {
     return DV(s.robot.forwardDynamics(a, b, tau));
   };
   const double h = 0.002;
-  for (int k = 0; k < 250; ++k) {
-    const DV a1 = acc(th, v), v2 = v + h / 2 * a1, a2 = acc(DV(th + h / 2 * v), v2), v3 = v + h / 2 * a2, a3 = acc(DV(th + h / 2 * v2), v3),
-             v4 = v + h * a3, a4 = acc(DV(th + h * v3), v4);
-    th += h / 6 * (v + 2 * v2 + 2 * v3 + v4);
-    v += h / 6 * (a1 + 2 * a2 + 2 * a3 + a4);
+  double drift = 0;
+  try {
+    for (int k = 0; k < 50; ++k) {
+      const DV a1 = acc(th, v), v2 = v + h / 2 * a1, a2 = acc(DV(th + h / 2 * v), v2), v3 = v + h / 2 * a2, a3 = acc(DV(th + h / 2 * v2), v3),
+               v4 = v + h * a3, a4 = acc(DV(th + h * v3), v4);
+      th += h / 6 * (v + 2 * v2 + 2 * v3 + v4);
+      v += h / 6 * (a1 + 2 * a2 + 2 * a3 + a4);
+    }
+    drift = (V6(geo.screws(th) * v) - X).cwiseAbs().maxCoeff();
+  } catch (const InvalidInput&) {
+    drift = 1e300;  // driven into a singularity
   }
-  recordFails(ctx, "the law with ch. 13's printed C_i = +s_iᵀN̄_ig (0.5 s): twist drift", "ch13 E1", (V6(geo.screws(th) * v) - X).cwiseAbs().maxCoeff(), 1e-6);
+  recordFails(ctx, "the law with ch. 13's printed C_i = +s_iᵀN̄_ig (0.1 s): twist drift", "ch13 E1", drift, 1e-6);
 }
 
 void curvatureStability(Context& ctx) {
