@@ -343,7 +343,7 @@ void fig151(Context& ctx) {
   d.arrow({8.0, 9.0, 9.0}, {2.2, 2.2, 3.25});
   d.sum(9.0, 3.7);
   d.arrow({9.2, 10.2}, {3.7, 3.7}, "τ");
-  d.box(11.4, 3.7, 2.2, 1.0, "robot + environment");
+  d.box(11.4, 3.7, 2.4, 1.0, "robot + environment");
   d.arrow({12.5, 13.3, 13.3, 1.8, 1.8}, {3.9, 3.9, 6.4, 6.4, 5.4});
   d.text(6.5, 6.6, "measured position x (kinematics)", rd::HAlign::Center, 18);
   d.arrow({12.5, 13.0, 13.0, 1.8, 1.8}, {3.5, 3.5, 0.9, 0.9, 2.0});
