@@ -1,4 +1,5 @@
-// GF §15.1 (lines 9529–9621): the bi-invariant geometry of SE(3) pulled back to joint space.
+#pragma once
+// GF §15.1 (lines 9529–9621): the bi-invariant geometry of SE(3) pulled back to joint space. Definitions; instantiated one scalar per TU in joint_space_geometry_<scalar>.cpp (compile time).
 #include "soma/geometry/dyngeom/joint_space_geometry.hpp"
 
 #include "soma/algebra/errors.hpp"
@@ -197,7 +198,5 @@ std::vector<std::vector<Vec6<S>>> JointSpaceGeometry<S>::maurerCartanDifferentia
 }
 
 #define SOMA_JOINT_SPACE_GEOMETRY_INST(S) template class JointSpaceGeometry<S>;
-SOMA_FOR_EACH_SCALAR(SOMA_JOINT_SPACE_GEOMETRY_INST)
-#undef SOMA_JOINT_SPACE_GEOMETRY_INST
 
 }  // namespace soma

@@ -1,4 +1,5 @@
-// GF §15.3: geodesic, velocity-tracking and accelerating control laws, and their closed loop.
+#pragma once
+// GF §15.3: geodesic, velocity-tracking and accelerating control laws, and their closed loop. Definitions; instantiated one scalar per TU in geodesic_control_<scalar>.cpp (compile time).
 #include "soma/geometry/dyngeom/geodesic_control.hpp"
 
 #include "soma/algebra/errors.hpp"
@@ -100,7 +101,5 @@ std::vector<ClosedLoopSample<S>> simulateGeodesicControl(const SerialDynamics<S>
   template std::vector<ClosedLoopSample<S>> simulateGeodesicControl<S>(                                       \
       const SerialDynamics<S>&, const GeodesicController<S>&, const DgVector<S>&, const DgVector<S>&,        \
       const DgVector<S>&, const S&, int, int);
-SOMA_FOR_EACH_SCALAR(SOMA_GEODESIC_CONTROL_INST)
-#undef SOMA_GEODESIC_CONTROL_INST
 
 }  // namespace soma

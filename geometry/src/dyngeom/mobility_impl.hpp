@@ -1,4 +1,5 @@
-// GF §15.2: mobility of single-loop mechanisms.
+#pragma once
+// GF §15.2: mobility of single-loop mechanisms. Definitions; instantiated one scalar per TU in mobility_<scalar>.cpp (compile time).
 #include "soma/geometry/dyngeom/mobility.hpp"
 
 #include "soma/algebra/errors.hpp"
@@ -34,6 +35,7 @@ template <class S> void checkScrews(const std::vector<Vec6<S>>& s, const char* f
 }
 }  // namespace
 
+#ifdef SOMA_DYNGEOM_MOBILITY_NONTEMPLATES  // defined once, in mobility_double.cpp
 // GF §15.2 line 9645 (Hunt p. 33 for the multi-loop form)
 int kutzbachGrubler(int links, int joints, int sumJointFreedoms, int d) {
   if (links < 1 || joints < 0 || sumJointFreedoms < 0)
@@ -41,6 +43,7 @@ int kutzbachGrubler(int links, int joints, int sumJointFreedoms, int d) {
   if (d != 3 && d != 6) throw InvalidInput("kutzbachGrubler: d must be 3 (planar/spherical) or 6 (spatial), got " + std::to_string(d));
   return d * (links - joints - 1) + sumJointFreedoms;
 }
+#endif
 
 template <class S> int screwSystemDimension(const std::vector<Vec6<S>>& screws) {
   checkScrews(screws, "screwSystemDimension");
@@ -202,7 +205,5 @@ template <class S> LoopTrace<S> traceLoop(const std::vector<Vec6<S>>& screws, co
   template std::vector<Vec6<S>> bennettLoop<S>(const S&, const S&, const S&, const S&);           \
   template S loopResidual<S>(const std::vector<Vec6<S>>&, const DgVector<S>&);                    \
   template LoopTrace<S> traceLoop<S>(const std::vector<Vec6<S>>&, const S&, int);
-SOMA_FOR_EACH_SCALAR(SOMA_MOBILITY_INST)
-#undef SOMA_MOBILITY_INST
 
 }  // namespace soma

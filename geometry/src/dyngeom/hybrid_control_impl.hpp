@@ -1,4 +1,5 @@
-// GF §15.4: coordinate-free hybrid force/position control.
+#pragma once
+// GF §15.4: coordinate-free hybrid force/position control. Definitions; instantiated one scalar per TU in hybrid_control_<scalar>.cpp (compile time).
 #include "soma/geometry/dyngeom/hybrid_control.hpp"
 
 #include "soma/algebra/errors.hpp"
@@ -131,7 +132,5 @@ template <class S> DgVector<S> forceControlTorque(const HybridProjectors<S>& p, 
   template Vec6<S> hybridAccelerationError<S>(const HybridProjectors<S>&, const Mat6<S>&, const Vec6<S>&,      \
                                               const Vec6<S>&, const Vec6<S>&);                                 \
   template DgVector<S> forceControlTorque<S>(const HybridProjectors<S>&, const Vec6<S>&, const DgMatrix<S>&);
-SOMA_FOR_EACH_SCALAR(SOMA_HYBRID_CONTROL_INST)
-#undef SOMA_HYBRID_CONTROL_INST
 
 }  // namespace soma
