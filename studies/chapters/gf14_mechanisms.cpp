@@ -525,7 +525,7 @@ void figure144(Context& ctx) {
   // oblique projection (x, y, z) → (x + 0.45 y, z + 0.3 y)
   auto pr = [](const V3& v) { return V2(v.x() - 0.45 * v.y(), v.z() + 0.25 * v.y()); };
   rd::Plot pl;
-  pl.title = "Fig. 14.4: platform and legs of a Stewart platform (leg 1: U1 on the platform, L1 on the ground)";
+  pl.title = "Fig. 14.4: Stewart platform, leg 1 = U1 (upper) + L1 (lower)";
   pl.equalAspect = true;
   pl.grid = false;
   std::vector<double> bx, by, px, py;
@@ -537,7 +537,7 @@ void figure144(Context& ctx) {
   }
   std::array<V3, 6> U;
   for (int i = 0; i < 6; ++i) U[std::size_t(i)] = pose * sd.platformPoints()[std::size_t(i)];
-  std::array<int, 6> po{1, 2, 3, 4, 5, 0};
+  std::array<int, 6> po{2, 1, 4, 3, 0, 5};  // platform points sorted by angle
   for (int i : po) {
     const V2 a = pr(U[std::size_t(i)]);
     px.push_back(a(0));
@@ -560,9 +560,12 @@ void figure144(Context& ctx) {
     up.width = 4;
   }
   const V3 L1 = sd.base()[0], U1 = U[0];
-  pl.texts.push_back({pr(L1)(0), pr(L1)(1), "L1 (x_L1, y_L1, z_L1)", rd::Color::hex(0xD55E00), 20});
+  rd::PlotText tl{pr(L1)(0), pr(L1)(1), "L1 (x_L1, y_L1, z_L1)", rd::Color::hex(0xD55E00), 20};
+  tl.dx = -230;
+  tl.dy = 24;
+  pl.texts.push_back(tl);
   pl.texts.push_back({pr(U1)(0), pr(U1)(1), "U1 (x_U1, y_U1, z_U1)", rd::Color::hex(0xE69F00), 20});
-  pl.legend = rd::LegendCorner::BottomRight;
+  pl.legend = rd::LegendCorner::TopLeft;
   const std::string file = "GF-14-fig-14.4.png";
   rd::renderPlotPng(pl, ctx.figurePath(file));
   ctx.figure(file, "Fig. 14.4 redrawn (oblique projection): the platform (blue) on six legs; leg 1 highlighted with its lower part L1 "

@@ -291,9 +291,9 @@ void figure141(Context& ctx) {
     n.markerRadius = 12;
     p.texts.push_back({xs[i], double(t.level(i)), "link " + std::to_string(i + 1), rd::Color::hex(0x000000), 22});
   }
-  auto& a = p.add("ancestry of link 6: (1, 3, 4, 6)", {0, 0.8, 0.2, 0.2}, {1, 2, 3, 4}, rd::Color::hex(0x009E73));
+  auto& a = p.add("ancestry of link 6: (1, 3, 4, 6)", {-0.12, 0.68, 0.08, 0.08}, {1, 2, 3, 4}, rd::Color::hex(0x009E73));
   a.dashed = true;
-  a.width = 2;
+  a.width = 3;
   p.legend = rd::LegendCorner::TopLeft;
   const std::string file = "GF-14-fig-14.1.png";
   rd::renderPlotPng(p, ctx.figurePath(file));
