@@ -170,10 +170,27 @@ void treeKinematics(Context& ctx) {
   SE3<double> K = SE3<double>::Identity();
   for (int j : t.topology().ancestry(5)) K = K * SE3Tangent<double>(V6(th(j) * t.homeScrews()[std::size_t(j)])).exp();
   ctx.checkResidual("K₆ = e^{θ₁s₁}e^{θ₃s₃}e^{θ₄s₄}e^{θ₆s₆} (POE along the ancestry)", (K.matrix() - c.placements[5].matrix()).cwiseAbs().maxCoeff(), 1e-14);
-  // star: relative to the root (6-dof root joint) K_i = K_root e^{…}: with the root moved by G, all links move by G
-  const SE3<double> Groot = SE3Tangent<double>((V6() << 0.1, -0.2, 0.3, 0.5, 0.1, -0.4).finished()).exp();
-  const double starErr = ((Groot * c.placements[5]).matrix() - (Groot * c.placements[0] * c.placements[0].inverse() * c.placements[5]).matrix()).cwiseAbs().maxCoeff();
-  ctx.checkResidual("star: K_i relative to the root composes with the root's motion", starErr, 1e-14);
+  // star (GF line 8782): a tree with a 6-dof root joint (six massless basis joints) whose links are
+  // placed by K_i = K_root · (POE of the joints above the root), the latter computed on its own
+  const TreeDynamics<double> sub = randomTree(g, {-1, 0, 0, 2});
+  std::vector<V6> s;
+  std::vector<M6> N(5, M6::Zero());
+  for (int k = 0; k < 3; ++k) s.push_back((V6() << V3::Zero(), V3::Unit(k)).finished());
+  for (int k = 0; k < 3; ++k) s.push_back((V6() << V3::Unit(k), V3::Zero()).finished());
+  N.push_back(randomBody(g).matrix());
+  std::vector<int> parent{-1, 0, 1, 2, 3, 4};
+  for (int i = 0; i < 4; ++i) {
+    parent.push_back(sub.topology().parent(i) < 0 ? 5 : 6 + sub.topology().parent(i));
+    s.push_back(sub.homeScrews()[std::size_t(i)]);
+    N.push_back(sub.homeInertias()[std::size_t(i)]);
+  }
+  const TreeDynamics<double> star(TreeTopology(parent), s, N, V3::Zero());
+  const DV ths = rvec(g, 10, 2);
+  const TreeConfiguration<double> cs = star.configuration(ths), cr = sub.configuration(DV(ths.tail(4)));
+  double starErr = 0;
+  for (int i = 0; i < 4; ++i)
+    starErr = std::max(starErr, ((cs.placements[5] * cr.placements[std::size_t(i)]).matrix() - cs.placements[std::size_t(6 + i)].matrix()).cwiseAbs().maxCoeff());
+  ctx.checkResidual("star: K_i = K_root · e^{θ_{i1}s_{i1}}···e^{θ_i s_i} (root as a 6-dof joint, 4 links)", starErr, 1e-14);
 }
 
 void treeVelocities(Context& ctx) {
