@@ -3,7 +3,9 @@
 // push-only grasp of an ellipsoid with its contact normals, and three fingers with friction cones).
 #include "soma/geometry/statics/grasp.hpp"
 #include "soma/geometry/statics/wrist_sensor.hpp"
+#include "soma/geometry/statics/robot_statics.hpp"
 #include "soma/render/render.hpp"
+#include "soma/studies/example_robots.hpp"
 #include "soma/studies/study.hpp"
 
 #include <cmath>
@@ -173,10 +175,102 @@ void fig124(Context& c) {
   }
 }
 
+
+// GF Fig. 12.1, GF-12-fig-12.1: a force F acting along the line through r on a rigid body, 𝒲 = (r × F, F)
+void fig121(Context& c) {
+  const V3 r(0.5, 0.3, 0.25), F(-0.2, 0.35, 0.45);
+  const Wrench<double> W = Wrench<double>::ofForce(r, F);
+  double slide = 0;
+  for (double lam : {-1.0, 0.5, 2.0}) slide = std::max(slide, (Wrench<double>::ofForce(V3(r + lam * F), F).coeffs() - W.coeffs()).cwiseAbs().maxCoeff());
+  c.checkResidual("𝒲 = (r × F, F) is unchanged when r slides along the line of action (λ = −1, ½, 2)", slide, 1e-15);
+  c.checkResidual("the moment r × F is perpendicular to F (pitch 0: a pure force)", abs(W.coeffs().head<3>().dot(F)), 1e-16);
+  if (!c.makeFigures()) return;
+  rd::Scene s;
+  s.title = "Fig. 12.1: a force F on a rigid body along the line through r: W = (r × F, F)";
+  s.axes = true;
+  s.axesLength = 0.3;
+  const V3 ctr(0.55, 0.25, 0.05);
+  s.add(rd::parametricSurface(
+      [&](double th, double ph) { return V3(ctr + V3(0.3 * std::cos(ph) * std::cos(th), 0.22 * std::cos(ph) * std::sin(th), 0.2 * std::sin(ph))); },
+      {-pi<double>(), pi<double>()}, {-pi<double>() / 2, pi<double>() / 2}, 64, 32, rd::palette::skyBlue.withAlpha(0.5f)));
+  rd::Polyline line;
+  line.p = {V3(r - 0.9 * F), V3(r + 1.6 * F)};
+  line.c = rd::palette::darkGrey;
+  line.dashed = true;
+  s.add(line);
+  s.add(rd::Arrow{r, V3(r + F), rd::palette::vermillion, 0.02});
+  s.add(rd::Arrow{V3::Zero(), r, rd::palette::blue, 0.012});
+  s.add(rd::sphere(r, 0.02, rd::palette::black));
+  label(s, V3(r + F), "F", {8, -8}, 28, rd::palette::vermillion);
+  label(s, V3(0.5 * r), "r", {8, -8}, 28, rd::palette::blue);
+  label(s, V3(r + 1.6 * F), "line of action", {8, -8}, 22, rd::palette::darkGrey);
+  label(s, V3::Zero(), "O", {-24, 16}, 26);
+  draw(c, s, V3(1.0, -1.4, 0.7), "GF-12-fig-12.1-force-on-body.png",
+       "Fig. 12.1 redrawn: a force F on a rigid body acts along the line through r (dashed); its wrench about the origin O is "
+       "𝒲 = (r × F, F), unchanged when r slides along the line.");
+}
+
+// GF Fig. 12.3, GF-12-fig-12.3: the wrenches on the links of a robot; the joint torques w_i = 𝒲_totᵀs_i
+void fig123(Context& c) {
+  const SerialRobot<double> robot = puma560Robot<double>();
+  JointVector<double> q(6);
+  q << 0.3, -0.7, 0.5, 0.4, 0.8, -0.3;
+  const auto J = robot.spatialJacobian(q);
+  const SE3<double> T = robot.fk(q);
+  const V3 tip = T.translation(), Ftip(0, 0, -20);  // a 20 N load hanging at the tool point
+  const Wrench<double> Wtot = Wrench<double>::ofForce(tip, Ftip);
+  const auto w = jointEfforts<double>(J, Wtot);
+  auto g = std::mt19937_64(1230);
+  double vw = 0;
+  for (int t = 0; t < 5; ++t) {
+    Eigen::Matrix<double, 6, 1> qd;
+    for (int i = 0; i < 6; ++i) qd(i) = std::uniform_real_distribution<double>(-1, 1)(g);
+    vw = std::max(vw, abs(Wtot.coeffs().dot(J * qd) - w.dot(qd)));
+  }
+  c.checkResidual("virtual work: 𝒲_totᵀ(Jθ̇) = Σ w_iθ̇_i with w_i = 𝒲_totᵀs_i (5 random θ̇)", vw, 1e-12);
+  // and back: 𝒲_tot = J⁻ᵀw (line 7448) recovers the load
+  c.checkResidual("𝒲_tot = J⁻ᵀ(w₁, …, w₆) recovers the 20 N load", (J.transpose().partialPivLu().solve(w) - Wtot.coeffs()).cwiseAbs().maxCoeff(), 1e-11);
+  if (!c.makeFigures()) return;
+  rd::Scene s;
+  s.title = "Fig. 12.3: joint torques w_i = W_totᵀs_i holding a 20 N load";
+  s.axes = true;
+  s.axesLength = 0.25;
+  const auto F = robot.frames(q);
+  std::vector<V3> pts;
+  for (const auto& f : F) pts.push_back(f.translation());
+  pts.push_back(tip);
+  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+    if ((pts[i + 1] - pts[i]).norm() < 1e-9) continue;
+    rd::Tube t;
+    t.p = {pts[i], pts[i + 1]};
+    t.radius = 0.025;
+    t.c = rd::palette::lightGrey.darker(0.2f);
+    s.add(t);
+  }
+  for (int i = 0; i < 6; ++i) {
+    const V3 o = F[std::size_t(i)].translation(), z = F[std::size_t(i)].rotation().col(2);
+    rd::Tube ax;
+    ax.p = {V3(o - 0.07 * z), V3(o + 0.07 * z)};
+    ax.radius = 0.04;
+    ax.c = rd::palette::blue;
+    s.add(ax);
+    label(s, V3(o + 0.08 * z), "w" + std::string(i == 0 ? "₁" : i == 1 ? "₂" : i == 2 ? "₃" : i == 3 ? "₄" : i == 4 ? "₅" : "₆") + " = " +
+                                  toString(w(i), 3) + " N·m",
+          {10, -6 - 18.0 * (i % 2)}, 20, rd::palette::blue);
+  }
+  s.add(rd::Arrow{tip, V3(tip + 0.02 * Ftip), rd::palette::vermillion, 0.015});
+  s.add(rd::sphere(tip, 0.03, rd::palette::vermillion));
+  label(s, V3(tip + 0.02 * Ftip), "W_tot: 20 N load", {8, 8}, 22, rd::palette::vermillion);
+  draw(c, s, V3(1.2, -1.6, 0.6), "GF-12-fig-12.3-link-wrenches.png",
+       "Fig. 12.3 redrawn: the PUMA 560 at q = (0.3, −0.7, 0.5, 0.4, 0.8, −0.3) holding a 20 N load; at each joint the motor "
+       "wrench 𝒲_i and the reaction ℛ_i sum to 𝒲_tot, so the joint torque is w_i = 𝒲_totᵀs_i (labels, N·m).");
+}
 }  // namespace
 
 #define GF12(ID, TITLE, SRC, FN) \
   SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
+GF12("GF-12-fig-12.1", "Fig. 12.1: a force acting on a rigid body", "GF §12.2", fig121);
+GF12("GF-12-fig-12.3", "Fig. 12.3: the wrenches acting on the links of a robot", "GF §12.4", fig123);
 GF12("GF-12-fig-12.2", "Fig. 12.2: the four-beam wrist force sensor", "GF §12.3", fig122);
 GF12("GF-12-fig-12.4", "Fig. 12.4: fingers on a rigid body — normals, and friction cones", "GF §12.5–12.6", fig124);
 #undef GF12
