@@ -247,6 +247,9 @@ void fig123(Context& c) {
     t.c = rd::palette::lightGrey.darker(0.2f);
     s.add(t);
   }
+  // The load passes through the wrist centre, on axes 4–6 of the PUMA: w₆ is zero up to rounding
+  // (8.9e-16 N·m); the labels print such a torque as 0.
+  const auto wShown = w.unaryExpr([&](double v) { return abs(v) < 1e-12 * w.cwiseAbs().maxCoeff() ? 0.0 : v; }).eval();
   for (int i = 0; i < 6; ++i) {
     const V3 o = F[std::size_t(i)].translation(), z = F[std::size_t(i)].rotation().col(2);
     rd::Tube ax;
@@ -255,13 +258,13 @@ void fig123(Context& c) {
     ax.c = rd::palette::blue;
     s.add(ax);
     label(s, V3(o + 0.08 * z), "w" + std::string(i == 0 ? "₁" : i == 1 ? "₂" : i == 2 ? "₃" : i == 3 ? "₄" : i == 4 ? "₅" : "₆") + " = " +
-                                  toString(w(i), 3) + " N·m",
+                                  toString(wShown(i), 3) + " N·m",
           {10, -6 - 18.0 * (i % 2)}, 20, rd::palette::blue);
   }
   s.add(rd::Arrow{tip, V3(tip + 0.02 * Ftip), rd::palette::vermillion, 0.015});
   s.add(rd::sphere(tip, 0.03, rd::palette::vermillion));
   label(s, V3(tip + 0.02 * Ftip), "W_tot: 20 N load", {8, 8}, 22, rd::palette::vermillion);
-  draw(c, s, V3(1.2, -1.6, 0.6), "GF-12-fig-12.3-link-wrenches.png",
+  draw(c, s, V3(1.6, 1.2, 0.7), "GF-12-fig-12.3-link-wrenches.png",  // across the forearm: the hanging load stays in view
        "Fig. 12.3 redrawn: the PUMA 560 at q = (0.3, −0.7, 0.5, 0.4, 0.8, −0.3) holding a 20 N load; at each joint the motor "
        "wrench 𝒲_i and the reaction ℛ_i sum to 𝒲_tot, so the joint torque is w_i = 𝒲_totᵀs_i (labels, N·m).");
 }

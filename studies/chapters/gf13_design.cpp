@@ -324,33 +324,60 @@ double brioschi(double E, double F, double G, double Ev, double Fv, double Gv, d
   return (M1.determinant() - M2.determinant()) / (den * den);
 }
 
-void gaussian(Context& ctx) {
-  auto g = std::mt19937_64(1366);
-  const SerialDynamics<double> r = twoR(lineScrew(unit3(g), rv3(g)), lineScrew(unit3(g), rv3(g)), randomBody(g), randomBody(g));
-  const SerialDynamics<Q> rq = castRobot<Q>(r);
-  const double t2 = 0.6;
+/// The 2R inertia metric E = A₁₁, F = A₁₂, G = A₂₂ at θ₂ and its θ₂-derivatives (A does not
+/// depend on θ₁), Δ = EG − F² with Δ', Δ'': 8th-order differences in __float128.
+struct MetricJet {
+  double e, f, g, ev, fv, gv, evv, d, dp, dpp;
+};
+MetricJet metricJet(const SerialDynamics<Q>& rq, double th2) {
   auto Aq = [&](const Q& u) {
     DynVector<Q> a(2);
-    a << Q(0), Q(t2) + u;
+    a << Q(0), Q(th2) + u;
     return rq.massMatrix(a);
   };
-  auto d1 = [&](auto f) { return dq(f); };
   auto d2 = [&](auto f) {
     return double(diff8<Q>([&](const Q& u) { return diff8<Q>([&](const Q& v) { return f(u + v); }, Q(1) / Q(256)); }, Q(1) / Q(256)));
   };
   auto E = [&](const Q& u) { return Aq(u)(0, 0); };
-  auto F = [&](const Q& u) { return Aq(u)(0, 1); };
-  auto G = [&](const Q& u) { return Aq(u)(1, 1); };
   auto Det = [&](const Q& u) {
     const DynMatrix<Q> A = Aq(u);
     return A(0, 0) * A(1, 1) - A(0, 1) * A(0, 1);
   };
   const DynMatrix<Q> A0 = Aq(Q(0));
-  const double e = double(A0(0, 0)), f = double(A0(0, 1)), gg = double(A0(1, 1));
-  const double Ev = d1(E), Fv = d1(F), Gv = d1(G), Evv = d2(E);
-  const double Kb = brioschi(e, f, gg, Ev, Fv, Gv, Evv);
-  const double D = e * gg - f * f, Dp = d1(Det), Dpp = d2(Det);
-  ctx.checkResidual("A₂₂ = s₂ᵀN₂s₂ independent of θ₂", abs(Gv), 1e-14);
+  MetricJet j{};
+  j.e = double(A0(0, 0));
+  j.f = double(A0(0, 1));
+  j.g = double(A0(1, 1));
+  j.ev = dq(E);
+  j.fv = dq([&](const Q& u) { return Aq(u)(0, 1); });
+  j.gv = dq([&](const Q& u) { return Aq(u)(1, 1); });
+  j.evv = d2(E);
+  j.d = j.e * j.g - j.f * j.f;
+  j.dp = dq(Det);
+  j.dpp = d2(Det);
+  return j;
+}
+double brioschi(const MetricJet& j) { return brioschi(j.e, j.f, j.g, j.ev, j.fv, j.gv, j.evv); }
+
+/// The random 2R of GF-13.6.3 (no gravity).
+SerialDynamics<double> curvature2R() {
+  auto g = std::mt19937_64(1366);
+  const V3 u1 = unit3(g), p1 = rv3(g), u2 = unit3(g), p2 = rv3(g);  // named: a fixed draw order
+  const V6 s1 = lineScrew(u1, p1);
+  const V6 s2 = lineScrew(u2, p2);
+  const SpatialInertia<double> l1 = randomBody(g);
+  const SpatialInertia<double> l2 = randomBody(g);
+  return twoR(s1, s2, l1, l2);
+}
+
+void gaussian(Context& ctx) {
+  const SerialDynamics<double> r = curvature2R();
+  const SerialDynamics<Q> rq = castRobot<Q>(r);
+  const double t2 = 0.6;
+  const MetricJet j = metricJet(rq, t2);
+  const double gg = j.g, Ev = j.ev, Evv = j.evv, D = j.d, Dp = j.dp, Dpp = j.dpp;
+  const double Kb = brioschi(j);
+  ctx.checkResidual("A₂₂ = s₂ᵀN₂s₂ independent of θ₂", abs(j.gv), 1e-14);
   // Δ', Δ'' from the book's screw formulas at the current configuration
   DV th(2);
   th << 0, t2;
@@ -371,7 +398,15 @@ void gaussian(Context& ctx) {
   ctx.checkNear("K(A) = (A₁₁'Δ' − 2ΔA₁₁'')/(4Δ²) (corrected) = Brioschi curvature of A", Kb, Kc, 1e-10 * std::max(1.0, abs(Kb)));
   recordFails(ctx, "K = (A₂₂/4)(2ΔΔ'' − 3Δ'²)/Δ² (line 8677) vs Brioschi K(A)", "11", abs(Kp - Kb) / std::max(1e-12, abs(Kb)), 1e-6);
   // the printed K is the curvature of A⁻¹
-  auto Ai = [&](const Q& u) { return DynMatrix<Q>(Aq(u).inverse()); };
+  auto Ai = [&](const Q& u) {
+    DynVector<Q> a(2);
+    a << Q(0), Q(t2) + u;
+    return DynMatrix<Q>(rq.massMatrix(a).inverse());
+  };
+  auto d1 = [&](auto fn) { return dq(fn); };
+  auto d2 = [&](auto fn) {
+    return double(diff8<Q>([&](const Q& u) { return diff8<Q>([&](const Q& v) { return fn(u + v); }, Q(1) / Q(256)); }, Q(1) / Q(256)));
+  };
   const DynMatrix<Q> B0 = Ai(Q(0));
   const double Kinv = brioschi(double(B0(0, 0)), double(B0(0, 1)), double(B0(1, 1)), d1([&](const Q& u) { return Ai(u)(0, 0); }),
                                d1([&](const Q& u) { return Ai(u)(0, 1); }), d1([&](const Q& u) { return Ai(u)(1, 1); }),
@@ -382,24 +417,11 @@ void gaussian(Context& ctx) {
     std::vector<double> ts, kb, kc, kp;
     for (int k = 0; k <= 72; ++k) {
       const double th2 = -pi<double>() + 2 * pi<double>() * k / 72;
-      auto Aat = [&](const Q& u) {
-        DynVector<Q> a(2);
-        a << Q(0), Q(th2) + u;
-        return rq.massMatrix(a);
-      };
-      const DynMatrix<Q> M0 = Aat(Q(0));
-      const double e0 = double(M0(0, 0)), f0 = double(M0(0, 1)), g0 = double(M0(1, 1));
-      const double ev = d1([&](const Q& u) { return Aat(u)(0, 0); }), fv = d1([&](const Q& u) { return Aat(u)(0, 1); });
-      const double evv = d2([&](const Q& u) { return Aat(u)(0, 0); });
-      auto det = [&](const Q& u) {
-        const DynMatrix<Q> A = Aat(u);
-        return A(0, 0) * A(1, 1) - A(0, 1) * A(0, 1);
-      };
-      const double dd = e0 * g0 - f0 * f0, ddp = d1(det), ddpp = d2(det);
+      const MetricJet m = metricJet(rq, th2);
       ts.push_back(th2);
-      kb.push_back(brioschi(e0, f0, g0, ev, fv, 0, evv));
-      kc.push_back((ev * ddp - 2 * dd * evv) / (4 * dd * dd));
-      kp.push_back(g0 / 4 * (2 * dd * ddpp - 3 * ddp * ddp) / (dd * dd));
+      kb.push_back(brioschi(m));
+      kc.push_back((m.ev * m.dp - 2 * m.d * m.evv) / (4 * m.d * m.d));
+      kp.push_back(m.g / 4 * (2 * m.d * m.dpp - 3 * m.dp * m.dp) / (m.d * m.d));
     }
     namespace rd = soma::render;
     rd::Plot pl;
@@ -422,6 +444,171 @@ void gaussian(Context& ctx) {
            "printed formula " + toString(Kp, 6) + "; Δ'' = " + toString(Dpp, 6) + " (differences), printed " + toString(DppBook(4), 6) + ".");
 }
 
+
+/// ∂A/∂θ_l (l = 0, 1) by the five-point stencil, h = 1e-3: truncation h⁴|A⁽⁵⁾|/30 ~ 1e-14,
+/// rounding ~ ε|A|/h ~ 1e-13 — independent of the recursive dynamics that rk4Step uses.
+std::array<DM, 2> massMatrixGradient(const SerialDynamics<double>& r, const DV& th) {
+  constexpr double h = 1e-3;
+  std::array<DM, 2> dA;
+  for (int l = 0; l < 2; ++l) {
+    auto at = [&](double t) {
+      DV a = th;
+      a(l) += t;
+      return r.massMatrix(a);
+    };
+    dA[std::size_t(l)] = (8 * (at(h) - at(-h)) - (at(2 * h) - at(-2 * h))) / (12 * h);
+  }
+  return dA;
+}
+/// θ̈^i = −Γ^i_jk θ̇^jθ̇^k with Γ^i_jk = ½A^{il}(∂_jA_lk + ∂_kA_lj − ∂_lA_jk): the geodesic equation
+/// of the kinetic-energy metric written from A alone. GF §13.4.2 (B = Christoffel symbols of A)
+DV christoffelAcceleration(const SerialDynamics<double>& r, const DV& th, const DV& v) {
+  const std::array<DM, 2> dA = massMatrixGradient(r, th);
+  DV lower = DV::Zero(2);  // Γ_ljk θ̇^jθ̇^k
+  for (int l = 0; l < 2; ++l)
+    for (int jj = 0; jj < 2; ++jj)
+      for (int k = 0; k < 2; ++k)
+        lower(l) += 0.5 * (dA[std::size_t(jj)](l, k) + dA[std::size_t(k)](l, jj) - dA[std::size_t(l)](jj, k)) * v(jj) * v(k);
+  return -r.massMatrix(th).ldlt().solve(lower);
+}
+struct Geodesic {
+  std::vector<DV> theta, thetaDot;
+};
+/// n RK4 steps of length h on the Christoffel form (theta, thetaDot sampled at every step).
+Geodesic christoffelGeodesic(const SerialDynamics<double>& r, DV th, DV v, double h, int n) {
+  Geodesic out{{th}, {v}};
+  for (int k = 0; k < n; ++k) {
+    const DV a1 = christoffelAcceleration(r, th, v);
+    const DV a2 = christoffelAcceleration(r, th + 0.5 * h * v, v + 0.5 * h * a1);
+    const DV a3 = christoffelAcceleration(r, th + 0.5 * h * (v + 0.5 * h * a1), v + 0.5 * h * a2);
+    const DV a4 = christoffelAcceleration(r, th + h * (v + 0.5 * h * a2), v + h * a3);
+    th += h * v + h * h / 6 * (a1 + a2 + a3);
+    v += h / 6 * (a1 + 2 * a2 + 2 * a3 + a4);
+    out.theta.push_back(th);
+    out.thetaDot.push_back(v);
+  }
+  return out;
+}
+/// Free motion without gravity (τ = 0) by the library's RK4 on the recursive dynamics.
+Geodesic freeMotion(const SerialDynamics<double>& r, const DV& th, const DV& v, double h, int n) {
+  JointState<double> y{th, v};
+  Geodesic out{{th}, {v}};
+  for (int k = 0; k < n; ++k) {
+    y = rk4Step<double>(r, y, h, DV::Zero(2));
+    out.theta.push_back(y.theta);
+    out.thetaDot.push_back(y.thetaDot);
+  }
+  return out;
+}
+
+// Derived figure (GF §13.4.2, §13.6.3): free motion of the 2R of GF-13.6.3 without gravity runs on
+// the geodesics of the kinetic-energy metric A; they bend where K ≠ 0 and spread by the Jacobi
+// equation J'' + KJ = 0.
+void geodesics2R(Context& ctx) {
+  const SerialDynamics<double> r = curvature2R();
+  const SerialDynamics<Q> rq = castRobot<Q>(r);
+  DV th0(2);
+  th0 << 0, 0.6;
+  const Eigen::LLT<DM> chol(r.massMatrix(th0));
+  const DM Lt = chol.matrixU();  // A = UᵀU: θ̇ = U⁻¹u has θ̇ᵀAθ̇ = |u|²
+  auto direction = [&](double phi) { return DV(Lt.triangularView<Eigen::Upper>().solve(Eigen::Vector2d(std::cos(phi), std::sin(phi)))); };
+  constexpr double T = 1.5;
+  constexpr int n = 300;
+  constexpr double h = T / n;
+  // 1. two formulations of the same motion agree: recursive dynamics vs Christoffel symbols of A
+  constexpr int fan = 16;
+  std::vector<Geodesic> free, chr;
+  double agree = 0, drift = 0;
+  for (int k = 0; k < fan; ++k) {
+    const DV v0 = direction(2 * pi<double>() * k / fan);
+    free.push_back(freeMotion(r, th0, v0, h, n));
+    chr.push_back(christoffelGeodesic(r, th0, v0, h, n));
+    for (int s = 0; s <= n; ++s) {
+      agree = std::max(agree, maxAbs(DV(free.back().theta[std::size_t(s)] - chr.back().theta[std::size_t(s)])));
+      const DV& th = free.back().theta[std::size_t(s)];
+      const DV& v = free.back().thetaDot[std::size_t(s)];
+      drift = std::max(drift, abs(v.dot(r.massMatrix(th) * v) - 1));
+    }
+  }
+  ctx.checkResidual("free motion (RNE, rk4Step) = geodesic of A (Γ from ∂A, own RK4): max |Δθ| over 16 directions, 1.5 s", agree, 1e-10);
+  ctx.checkResidual("speed θ̇ᵀAθ̇ = 1 conserved along the geodesics (RK4, h = 5 ms)", drift, 1e-10);
+  // RK4 is fourth order: the speed drift falls by ~16 when h halves
+  double drift2 = 0;
+  {
+    const Geodesic fine = freeMotion(r, th0, direction(0.3), h / 2, 2 * n), coarse = freeMotion(r, th0, direction(0.3), h, n);
+    auto worst = [&](const Geodesic& gd) {
+      double w = 0;
+      for (std::size_t s = 0; s < gd.theta.size(); ++s)
+        w = std::max(w, abs(gd.thetaDot[s].dot(r.massMatrix(gd.theta[s]) * gd.thetaDot[s]) - 1));
+      return w;
+    };
+    drift = worst(coarse);
+    drift2 = worst(fine);
+  }
+  ctx.checkNear("RK4 order of the speed drift: log₂(drift(h)/drift(h/2)) = 4", 4.0, std::log2(drift / drift2), 0.5);
+  // 2. Jacobi: geodesics leaving at angle δ separate as δJ(t), J'' = −K(θ₂(t))J, J(0) = 0, J'(0) = 1
+  constexpr double delta = 1e-5, phi0 = 0.3;
+  constexpr int nj = 60;
+  constexpr double hj = T / nj;
+  const Geodesic base = freeMotion(r, th0, direction(phi0), hj, nj), side = freeMotion(r, th0, direction(phi0 + delta), hj, nj);
+  // J along the base geodesic by RK4 with K at the step's ends and midpoint (θ₂ of the base at
+  // t + h/2 from a half step of the same integrator)
+  double J = 0, Jd = 1, worstJ = 0, worstFlat = 0;
+  for (int k = 0; k < nj; ++k) {
+    const double Ka = brioschi(metricJet(rq, base.theta[std::size_t(k)](1)));
+    const JointState<double> half = rk4Step<double>(r, {base.theta[std::size_t(k)], base.thetaDot[std::size_t(k)]}, hj / 2, DV::Zero(2));
+    const double Km = brioschi(metricJet(rq, half.theta(1)));
+    const double Kb = brioschi(metricJet(rq, base.theta[std::size_t(k) + 1](1)));
+    const double k1 = Jd, l1 = -Ka * J;
+    const double k2 = Jd + 0.5 * hj * l1, l2 = -Km * (J + 0.5 * hj * k1);
+    const double k3 = Jd + 0.5 * hj * l2, l3 = -Km * (J + 0.5 * hj * k2);
+    const double k4 = Jd + hj * l3, l4 = -Kb * (J + hj * k3);
+    J += hj / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+    Jd += hj / 6 * (l1 + 2 * l2 + 2 * l3 + l4);
+    const DV d = side.theta[std::size_t(k) + 1] - base.theta[std::size_t(k) + 1];
+    const DV mid = 0.5 * (side.theta[std::size_t(k) + 1] + base.theta[std::size_t(k) + 1]);
+    const double sep = std::sqrt(d.dot(r.massMatrix(mid) * d)) / delta;
+    worstJ = std::max(worstJ, abs(sep - J) / J);
+    worstFlat = std::max(worstFlat, abs(sep - hj * (k + 1)) / (hj * (k + 1)));
+  }
+  // relative tolerance δ: the separation is δJ + O(δ²)
+  ctx.checkResidual("separation of geodesics δ = 1e-5 apart = δJ(t), J'' + K J = 0 (relative, 1.5 s)", worstJ, delta);
+  ctx.record("control: the flat prediction J = t (K = 0) misses the separation by more than 1 %", "> 0.01", toString(worstFlat, 3),
+             worstFlat, 1e-2, worstFlat > 1e-2);
+  ctx.note("2R of GF-13.6.3 from θ = (0, 0.6) at unit speed θ̇ᵀAθ̇ = 1: RNE vs Christoffel " + toString(agree, 2) + " rad; speed drift " +
+           toString(drift, 2) + " (h = 5 ms), " + toString(drift2, 2) + " (h/2); Jacobi field vs separation " + toString(worstJ, 2) +
+           " relative, the flat J = t is off by " + toString(worstFlat, 2) + ".");
+  if (!ctx.makeFigures()) return;
+  namespace rd = soma::render;
+  rd::Plot pl;
+  pl.title = "Geodesics of a 2R's kinetic-energy metric (free motion, no gravity)";
+  pl.x.label = "θ₁ [rad]";
+  pl.y.label = "θ₂ [rad]";
+  pl.equalAspect = true;
+  pl.y.max = 2.1;  // room for the legend above the fan
+  for (int k = 0; k < fan; ++k) {
+    std::vector<double> x, y, lx, ly;
+    for (const DV& t : free[std::size_t(k)].theta) {
+      x.push_back(t(0));
+      y.push_back(t(1));
+    }
+    const DV v0 = free[std::size_t(k)].thetaDot.front();
+    for (int s = 0; s <= 10; ++s) {
+      lx.push_back(th0(0) + T * s / 10 * v0(0));
+      ly.push_back(th0(1) + T * s / 10 * v0(1));
+    }
+    pl.add(k == 0 ? "straight lines θ₀ + tθ̇₀ (flat metric)" : "", lx, ly, rd::Color::hex(0xAAAAAA)).dashed = true;
+    pl.add(k == 0 ? "geodesics of A, unit speed, 1.5 s" : "", x, y, rd::Color::hex(0x0072B2));
+  }
+  auto& st = pl.add("start θ₀ = (0, 0.6)", {th0(0)}, {th0(1)}, rd::Color::hex(0xD55E00));
+  st.line = false;
+  st.markers = true;
+  const std::string file = "GF-13.6.3-geodesics-2R.png";
+  rd::renderPlotPng(pl, ctx.figurePath(file));
+  ctx.figure(file, "Free motions of the random 2R of GF-13.6.3 without gravity, from one posture in 16 directions at unit "
+                   "kinetic speed: geodesics of the inertia metric A (blue), which bend away from the straight lines of "
+                   "the joint coordinates (dashed); their spreading follows the Jacobi equation with the Gaussian curvature K(θ₂).");
+}
 }  // namespace
 
 #define GF13(ID, TITLE, SRC, FN) \
@@ -433,6 +620,7 @@ GF13("GF-13.6.2-ignorable-IIA-IIB", "θ₂ ignorable for intersecting (IIA) and 
 GF13("GF-13.6.2-ignorable-3R", "θ₂ and θ₃ ignorable in a 3R: s₁ ∥ s₂, composite c.o.m. on s₂", "GF §13.6.2", ignorable3R);
 GF13("GF-13.6.3-flat-coordinates", "Flat coordinates φ(θ): φ̈ = K⁻ᵀτ; B = K_li∂_kK_lj (erratum 20)", "GF §13.6.3", flat);
 GF13("GF-13.6.3-gaussian-curvature-2R", "Gaussian curvature of a 2R inertia metric (errata 11, 12)", "GF §13.6.3", gaussian);
+GF13("GF-13.6.3-geodesics-2R", "Derived figure: free motion = geodesics of A; Jacobi spreading by K", "GF §13.4.2, §13.6.3", geodesics2R);
 #undef GF13
 
 }  // namespace soma::studies::gf13::SOMA_UNITY_ID

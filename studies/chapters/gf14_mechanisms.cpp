@@ -564,8 +564,12 @@ void figure144(Context& ctx) {
   tl.dx = -230;
   tl.dy = 24;
   pl.texts.push_back(tl);
-  pl.texts.push_back({pr(U1)(0), pr(U1)(1), "U1 (x_U1, y_U1, z_U1)", rd::Color::hex(0xE69F00), 20});
+  rd::PlotText tu{pr(U1)(0), pr(U1)(1), "U1 (x_U1, y_U1, z_U1)", rd::Color::hex(0xE69F00), 20};
+  tu.dx = 60;  // right of leg 1, clear of the platform edge
+  tu.dy = 30;
+  pl.texts.push_back(tu);
   pl.legend = rd::LegendCorner::TopLeft;
+  pl.y.max = 1.5;  // room above the platform for the legend
   const std::string file = "GF-14-fig-14.4.png";
   rd::renderPlotPng(pl, ctx.figurePath(file));
   ctx.figure(file, "Fig. 14.4 redrawn (oblique projection): the platform (blue) on six legs; leg 1 highlighted with its lower part L1 "
