@@ -897,4 +897,12 @@ void renderPng(const Scene& scene, const RenderOptions& options, const std::file
   writePng(render(scene, options), png);
 }
 
+void renderPng(const Scene& scene, const Eigen::Vector3d& viewDir, const FitOptions& fit, const std::filesystem::path& png) {
+  RenderOptions options;
+  options.width = fit.width;
+  options.height = fit.height;
+  options.camera = Camera::fit(scene, viewDir, fit);
+  renderPng(scene, options, png);
+}
+
 }  // namespace soma::render

@@ -65,12 +65,8 @@ void helixFigure(Context& c) {
   label(p0, "p₀,  t = 0");
   label((xi * tMax).exp().act(p0), "t = 4π");
   label((xi * (tMax * 0.6)).exp().act(p0), "p(t) = exp(tξ) p₀");
-  rd::RenderOptions opt;
-  opt.width = 1200;
-  opt.height = 1000;
-  opt.camera = rd::Camera::fit(scene, Eigen::Vector3d(-1.0, -0.55, -0.32), {opt.width, opt.height});
   const std::string file = "GF-4.4.2-helix.png";
-  rd::renderPng(scene, opt, c.figurePath(file));
+  rd::renderPng(scene, Eigen::Vector3d(-1.0, -0.55, -0.32), {1200, 1000}, c.figurePath(file));
   c.figure(file,
            "A point p₀ = (1, 0, 0) under the screw motion exp(tξ), ξ = (e_z; h e_z), h = 0.12 per radian, "
            "t ∈ [0, 4π]: the helix (blue), the frame carried along every 60° (x red, y green, z blue) and "
@@ -114,18 +110,14 @@ void interpolationFigure(Context& c) {
   label(b.translation(), "b (t = 1)", {12, -34});
   label(p + s1 * d, "screw axis of a⁻¹b", {-12, -12}, rd::HAlign::Right);
   label(SE3d::interpolate(a, b, 0.5).translation(), "path of the origin", {0, 34});
-  rd::RenderOptions opt;
-  opt.width = 1200;
-  opt.height = 950;
   // Look across the screw axis (perpendicular to it, slightly from above), orthographic.
   const Eigen::Vector3d across = d.cross(Eigen::Vector3d::UnitZ()).normalized();
   rd::FitOptions fit;
-  fit.width = opt.width;
-  fit.height = opt.height;
+  fit.width = 1200;
+  fit.height = 950;
   fit.orthographic = true;
-  opt.camera = rd::Camera::fit(scene, Eigen::Vector3d(-(across + 0.45 * d.cross(across)).normalized()), fit);
   const std::string file = "GF-4.4.2-interpolation.png";
-  rd::renderPng(scene, opt, c.figurePath(file));
+  rd::renderPng(scene, Eigen::Vector3d(-(across + 0.45 * d.cross(across)).normalized()), fit, c.figurePath(file));
   c.figure(file,
            "SE3::interpolate between pose a and pose b (rotation 2.4 rad about (1,1,1)/√3, translation "
            "(2.2, 1.2, 0.9)): frames at t = 0, ⅛, …, 1 and the path of the origin (vermillion), a helix "

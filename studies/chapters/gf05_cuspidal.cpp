@@ -105,11 +105,7 @@ void renderRobotPath(const SerialRobot<S>& robot, const std::vector<JointVector<
   base.radius = 0.02 * L;
   base.c = rd::palette::black;
   scene.add(base);
-  rd::RenderOptions opt;
-  opt.width = 1200;
-  opt.height = 1000;
-  opt.camera = rd::Camera::fit(scene, viewDir, {opt.width, opt.height});
-  rd::renderPng(scene, opt, png);
+  rd::renderPng(scene, viewDir, {1200, 1000}, png);
 }
 
 // GF §5.2.3, GF-5.2.3-cuspidal-posture-change: cusp points by the triple-root condition and by

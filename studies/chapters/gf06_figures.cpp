@@ -40,15 +40,11 @@ void addTube(rd::Scene& s, const V3& a, const V3& b, rd::Color c, double radius)
 }
 void draw(Context& c, rd::Scene& scene, const V3& view, const std::string& file, const std::string& caption,
             int w = 1200, int h = 950, bool ortho = false) {
-  rd::RenderOptions opt;
-  opt.width = w;
-  opt.height = h;
   rd::FitOptions fo;
   fo.width = w;
   fo.height = h;
   fo.orthographic = ortho;
-  opt.camera = rd::Camera::fit(scene, view, fo);
-  rd::renderPng(scene, opt, c.figurePath(file));
+  rd::renderPng(scene, view, fo, c.figurePath(file));
   c.figure(file, caption);
 }
 

@@ -435,12 +435,8 @@ void reguli(Context& c) {
     waist.c = rd::palette::darkGrey;
     waist.width = 2;
     scene.add(waist);
-    rd::RenderOptions opt;
-    opt.width = 1100;
-    opt.height = 1000;
-    opt.camera = rd::Camera::fit(scene, Eigen::Vector3d(-1.0, -0.6, -0.45), {opt.width, opt.height});
     const std::string file = "GF-8.3-regulus-IA1.png";
-    rd::renderPng(scene, opt, c.figurePath(file));
+    rd::renderPng(scene, Eigen::Vector3d(-1.0, -0.6, -0.45), {1100, 1000}, c.figurePath(file));
     c.figure(file,
              "The zero-pitch screws (lines) of the IA₁ 3-system (i, 0.6 i), (j, 0.3 j), (k, −0.4 k) form one regulus "
              "of the hyperboloid 0.6x² + 0.3y² − 0.4z² = 0.072 (blue); the lines of its reciprocal system (pitches "

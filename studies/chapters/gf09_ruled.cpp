@@ -319,15 +319,8 @@ void fig91(Context& c) {
   lab(V3(p + 0.7 * f.n.direction()), "ň", rd::palette::bluishGreen, {8, 18});
   lab(V3(p + 0.7 * f.t.direction()), "ť", rd::palette::orange);
   lab(V3(-d, 0, 0), "striction curve (throat circle)", rd::palette::vermillion, {-8, 26});
-  rd::RenderOptions opt;
-  opt.width = 1100;
-  opt.height = 1000;
-  rd::FitOptions fo;
-  fo.width = opt.width;
-  fo.height = opt.height;
-  opt.camera = rd::Camera::fit(s, V3(-0.55, -1.0, -0.3), fo);
   const std::string file = "GF-9.4-fig9.1-line-sweeps-regulus.png";
-  rd::renderPng(s, opt, c.figurePath(file));
+  rd::renderPng(s, V3(-0.55, -1.0, -0.3), {1100, 1000}, c.figurePath(file));
   c.figure(file, "A line sweeps out a cylindrical regulus (Fig. 9.1): the generator ľ (through (0.8, 0, 0) at α = 0.6 to the axis ǎ = z) "
                  "and 13 of its rotated copies on the hyperboloid ρ² = d² + z² tan²α; the striction curve is the throat circle of "
                  "radius d (vermillion); at the striction point the dual Frenet frame ľ, ň (common perpendicular with the axis, "

@@ -93,15 +93,8 @@ void planeFigure(Context& c) {
   label(V3(foot + 1.3 * n - 1.2 * b), "p ∨ π < 0: the side n points to", {0, -14}, rd::HAlign::Center, rd::palette::vermillion);
   label(V3(foot - 1.3 * n + 1.2 * b), "p ∨ π = d − x·n > 0: the origin's side", {0, 80}, rd::HAlign::Center, rd::palette::blue);
   label(V3(foot + R * a - R * b), "π: n·r = d", {8, 8});
-  rd::RenderOptions opt;
-  opt.width = 1200;
-  opt.height = 950;
-  rd::FitOptions fit;
-  fit.width = opt.width;
-  fit.height = opt.height;
-  opt.camera = rd::Camera::fit(scene, V3(-(a * 1.0 + n * 0.42 - b * 0.55)).normalized(), fit);
   const std::string file = "GF-10.1.1-fig10.1-plane.png";
-  rd::renderPng(scene, opt, c.figurePath(file));
+  rd::renderPng(scene, V3(-(a * 1.0 + n * 0.42 - b * 0.55)).normalized(), {1200, 950}, c.figurePath(file));
   c.figure(file,
            "A plane π = n + d e (n·r = d, d = 1.2) with its unit normal n and the distance d from the origin "
            "(GF Fig. 10.1). Random points are coloured by the sign of the shuffle p ∨ π = d − x·n: vermillion "

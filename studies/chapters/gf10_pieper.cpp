@@ -230,12 +230,8 @@ void t3Figure(Context& c) {
   l.at = T.translation();
   l.text = "tool pose k";
   scene.add(l);
-  rd::RenderOptions opt;
-  opt.width = 1200;
-  opt.height = 1000;
-  opt.camera = rd::Camera::fit(scene, Eigen::Vector3d(-1.0, -0.8, -0.45), {opt.width, opt.height});
   const std::string file = "GF-10.3.2-fig10.2-T3.png";
-  rd::renderPng(scene, opt, c.figurePath(file));
+  rd::renderPng(scene, Eigen::Vector3d(-1.0, -0.8, -0.45), {1200, 1000}, c.figurePath(file));
   c.figure(file, fmt::format("The T³ robot (joints 2-4 parallel, l = (0.9, 0.7, 0.25)): the {} postures that "
                              "place the tool at one pose, one colour each (tubes through the joint axis "
                              "points, dots at the joints, joint 5's frame showing the wrist flip — the "

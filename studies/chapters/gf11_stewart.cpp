@@ -126,15 +126,11 @@ void postureGrid(Context& c, const StewartPlatform<S>& P, const StewartForwardSo
     scene.add(l);
   }
   const int w = 1500, h = 1050;
-  rd::RenderOptions opt;
-  opt.width = w;
-  opt.height = h;
   rd::FitOptions fo;
   fo.width = w;
   fo.height = h;
   fo.orthographic = true;
-  opt.camera = rd::Camera::fit(scene, Eigen::Vector3d(0.0, 1.0, -0.3), fo);
-  rd::renderPng(scene, opt, c.figurePath(file));
+  rd::renderPng(scene, Eigen::Vector3d(0.0, 1.0, -0.3), fo, c.figurePath(file));
   c.figure(file, fmt::format("GF Fig. 11.1 for a real platform: the {} real assembly modes of one general 6-6 "
                              "Stewart platform (studies/platforms/general.json) for the same six leg lengths, "
                              "found with the other {} complex solutions by homotopy continuation; each posture's "
@@ -538,16 +534,8 @@ void triangleFigure(Context& c) {
   label(p1 + 0.7 * (p2 - p1) + Eigen::Vector3d(0, 0, -0.12), "revolute axis");
   label(apex + Eigen::Vector3d(0, 0, 0.08), "spherical joint (shared platform joint)");
   label(circle[36] + Eigen::Vector3d(0, 0, -0.08), "circle of the apex");
-  const int w = 1200, hgt = 900;
-  rd::RenderOptions opt;
-  opt.width = w;
-  opt.height = hgt;
-  rd::FitOptions fo;
-  fo.width = w;
-  fo.height = hgt;
-  opt.camera = rd::Camera::fit(scene, Eigen::Vector3d(0.35, 1.0, -0.45), fo);
   const std::string f = "GF-11-fig-11.2.png";
-  rd::renderPng(scene, opt, c.figurePath(f));
+  rd::renderPng(scene, Eigen::Vector3d(0.35, 1.0, -0.45), {1200, 900}, c.figurePath(f));
   c.figure(f, fmt::format("Two legs (blue) of a 6-3 platform share a platform joint; with the line through their "
                           "base joints (red) they form a rigid triangle that turns about that line: a revolute joint "
                           "and a spherical joint. The apex moves on the orange circle, of radius the triangle's "

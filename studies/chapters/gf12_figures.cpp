@@ -33,14 +33,7 @@ void label(rd::Scene& s, const V3& at, const std::string& text, Eigen::Vector2d 
   s.add(l);
 }
 void draw(Context& c, rd::Scene& scene, const V3& view, const std::string& file, const std::string& caption) {
-  rd::RenderOptions opt;
-  opt.width = 1200;
-  opt.height = 950;
-  rd::FitOptions fo;
-  fo.width = opt.width;
-  fo.height = opt.height;
-  opt.camera = rd::Camera::fit(scene, view, fo);
-  rd::renderPng(scene, opt, c.figurePath(file));
+  rd::renderPng(scene, view, {1200, 950}, c.figurePath(file));
   c.figure(file, caption);
 }
 

@@ -93,15 +93,8 @@ void figures(Context& ctx) {
     s.add(l);
   }
   s.add(rd::Points{{cm}, rd::palette::black, 0.02});
-  rd::RenderOptions opt;
-  opt.width = 1200;
-  opt.height = 950;
-  rd::FitOptions fo;
-  fo.width = opt.width;
-  fo.height = opt.height;
-  opt.camera = rd::Camera::fit(s, V3(R * V3(1, 0.75, 0.55)), fo);  // oblique to all three principal axes
   const std::string file = "GF-13-principal-screws-of-inertia.png";
-  rd::renderPng(s, opt, ctx.figurePath(file));
+  rd::renderPng(s, V3(R * V3(1, 0.75, 0.55)), {1200, 950}, ctx.figurePath(file));  // oblique to all three principal axes
   ctx.figure(file, "The six principal screws of inertia of a 0.6 × 0.4 × 0.2 m box (equivalent ellipsoid shown): on each "
                    "principal axis through the c.o.m. a right-handed helix of pitch +√(d_i/m) (dark) and a left-handed one "
                    "of pitch −√(d_i/m) (light); computed from N s = λQ₀s in a general pose.");

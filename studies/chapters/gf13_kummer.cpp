@@ -116,14 +116,7 @@ void kummerFigure(Context& ctx) {
   lb.offset = {10, 14};
   lb.pixelHeight = 22;
   s.add(lb);
-  rd::RenderOptions opt;
-  opt.width = 1200;
-  opt.height = 950;
-  rd::FitOptions fo;
-  fo.width = opt.width;
-  fo.height = opt.height;
-  opt.camera = rd::Camera::fit(s, V3(1.3, -1.0, 0.8), fo);
-  rd::renderPng(s, opt, ctx.figurePath("GF-13.6.1-kummer.png"));
+  rd::renderPng(s, V3(1.3, -1.0, 0.8), {1200, 950}, ctx.figurePath("GF-13.6.1-kummer.png"));
   ctx.figure("GF-13.6.1-kummer.png", "The quadratic line complex of a decoupled 2R (principal moments 0.3, 0.5, 0.9): at three points "
                                     "off the principal planes the complex lines form quadratic cones (coloured); at a point of the "
                                     "plane z = 0 the cone splits into two planes (black). The Kummer surface det M = 0 is the union "

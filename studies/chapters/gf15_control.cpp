@@ -275,14 +275,7 @@ void helixFigure(Context& ctx) {
   la.text = "screw axis, pitch " + toString(pitch, 3) + " m/rad";
   la.pixelHeight = 24;
   sc.add(la);
-  rd::RenderOptions opt;
-  opt.width = 1200;
-  opt.height = 950;
-  rd::FitOptions fo;
-  fo.width = opt.width;
-  fo.height = opt.height;
-  opt.camera = rd::Camera::fit(sc, V3(1, -1.2, 0.45), fo);
-  rd::renderPng(sc, opt, ctx.figurePath("gf15_helical_path.png"));
+  rd::renderPng(sc, V3(1, -1.2, 0.45), {1200, 950}, ctx.figurePath("gf15_helical_path.png"));
   ctx.figure("gf15_helical_path.png", "End-effector path of the PUMA 560 (ch. 13 inertias, g = 9.81) under the geodesic control "
                                       "law τ = (B − AΓ)θ̇θ̇ + C, started with the twist of a pitch-0.05 m/rad screw about the base z axis "
                                       "(dashed): one turn of the helix; end-effector frames every 0.5 s.");

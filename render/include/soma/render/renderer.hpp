@@ -40,6 +40,9 @@ Image render(const Scene& scene, const RenderOptions& options = {});
 std::vector<std::uint8_t> renderRgba(const Scene& scene, const RenderOptions& options = {});
 /// Render and write a PNG (throws like render and writePng).
 void renderPng(const Scene& scene, const RenderOptions& options, const std::filesystem::path& png);
+/// Render with the camera fitted to the scene along viewDir, the image fit.width × fit.height,
+/// and write a PNG (the usual way a study draws a 3-D figure).
+void renderPng(const Scene& scene, const Eigen::Vector3d& viewDir, const FitOptions& fit, const std::filesystem::path& png);
 
 /// The TrueType font used for text: $SOMA_FONT if set, else the first DejaVu Sans found in the
 /// standard locations (Debian fonts-dejavu-core, Fedora, Arch, macOS, ...). Throws std::runtime_error
