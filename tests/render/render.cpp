@@ -311,6 +311,30 @@ TEST_CASE("render: renderRgba, renderPng and effectiveCamera agree with render",
   CHECK((effectiveCamera(s, o).eye - Eigen::Vector3d(3, 3, 3)).norm() == 0);
 }
 
+TEST_CASE("render: renderPng along a view direction = render with the fitted camera", "[render]") {
+  Scene s;
+  s.add(sphere({0, 0, 0}, 0.5, palette::orange));
+  s.add(sphere({0.9, 0, 0}, 0.2, palette::blue));  // off-centre: the image depends on the view
+  FitOptions f;
+  f.width = 72;
+  f.height = 40;
+  f.orthographic = true;
+  const Eigen::Vector3d view(1, -2, 0.5);
+  const auto path = std::filesystem::temp_directory_path() / "soma-render-renderpng-view.png";
+  renderPng(s, view, f, path);
+  const Image got = readPng(path);
+  std::filesystem::remove(path);
+  RenderOptions o;
+  o.width = f.width;
+  o.height = f.height;
+  o.camera = Camera::fit(s, view, f);
+  CHECK(got.width == 72);
+  CHECK(got.height == 40);
+  CHECK(got.rgba == render(s, o).rgba);
+  o.camera = Camera::fit(s, Eigen::Vector3d(-1, 2, 0.5), f);  // the view direction is honoured
+  CHECK(got.rgba != render(s, o).rgba);
+}
+
 TEST_CASE("render: concurrent calls are serialised and give the same image", "[render]") {
   Scene s;
   s.add(sphere({0, 0, 0}, 0.5, palette::reddishPurple));
