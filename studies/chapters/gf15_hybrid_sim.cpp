@@ -105,7 +105,7 @@ Control control(const Peg& peg, double t, const SE3<double>& g, const V6& V, boo
 }
 
 struct Run {
-  std::vector<double> t, ePhi, eD, forceErr, secondForm;
+  std::vector<double> t, ePhi, eD, forceErr;
   double drift = 0, forceErrMax = 0, forceIIdev = 0, bookTerm = 0, bookLambda = 0, reactionPower = 0, predDev = 0;
   double energyErr = 0, work = 0, dEK = 0, secondFormMax = 0;
   int badStages = 0;
@@ -152,7 +152,6 @@ Run simulate(const Peg& peg, double h, bool secondFundamental) {
     run.ePhi.push_back(c.positionError(2));
     run.eD.push_back(c.positionError(5));
     run.forceErr.push_back(ferr);
-    run.secondForm.push_back(II.cwiseAbs().maxCoeff());
     run.predDev = std::max({run.predDev, abs(c.positionError(2) - predicted(e0[0], ed0[0], t)),
                             abs(c.positionError(5) - predicted(e0[1], ed0[1], t))});
     if (k == steps) break;
@@ -247,20 +246,34 @@ void closedLoop(Context& ctx) {
   plot.y.label = "error";
   plot.y.scale = rd::AxisScale::Log10;
   plot.y.min = 1e-17;
-  plot.y.max = 3;
+  plot.y.max = 30;
   auto absv = [](std::vector<double> v) {
     for (double& x : v) x = std::abs(x);
     return v;
   };
   std::vector<double> pred;
   for (double t : full.t) pred.push_back(std::abs(predicted(kE0[0], kEd0[0], t)));
-  plot.add("|turn error| (rad)", full.t, absv(full.ePhi), rd::palette::blue);
-  plot.add("|depth error| (m)", full.t, absv(full.eD), rd::palette::bluishGreen);
-  plot.add("predicted turn error (poles −2, −8)", full.t, pred, rd::palette::black).dashed = true;
-  plot.add("force error, full law (N, N m)", full.t, full.forceErr, rd::palette::vermillion);
-  plot.add("force error without N₆II(V,V)", flat.t, flat.forceErr, rd::palette::orange);
-  plot.add("|N₆II(V,V)|", flat.t, flat.secondForm, rd::palette::reddishPurple).dashed = true;
-  plot.legend = rd::LegendCorner::BottomLeft;
+  // direct labels instead of a legend (the only free space is the band between the errors and rounding)
+  plot.add("", full.t, absv(full.ePhi), rd::palette::blue);
+  plot.add("", full.t, pred, rd::palette::black).dashed = true;
+  plot.add("", full.t, absv(full.eD), rd::palette::bluishGreen);
+  plot.add("", full.t, full.forceErr, rd::palette::vermillion);
+  plot.add("", flat.t, flat.forceErr, rd::palette::orange);
+  auto label = [&](double x, double y, const std::string& text, rd::Color c, rd::VAlign v) {
+    rd::PlotText t;
+    t.x = x;
+    t.y = y;
+    t.text = text;
+    t.c = c;
+    t.vAlign = v;
+    t.dx = 0;
+    t.dy = 0;
+    plot.texts.push_back(t);
+  };
+  label(0.05, 2.5, "force error without N₆II(V,V) in the law (orange): equals |N₆II(V,V)| to " + toString(flat.forceIIdev, 1), rd::palette::vermillion, rd::VAlign::Bottom);
+  label(0.6, 1e-5, "|turn error| (rad, blue) = gain prediction, poles −2, −8 (black dashed)", rd::palette::blue, rd::VAlign::Top);
+  label(0.6, 1.5e-7, "|depth error| (m, green)", rd::palette::bluishGreen, rd::VAlign::Top);
+  label(0.05, 3e-13, "force error of the full law: |reaction + N₆YᵀYW_d| (N, N m), rounding", rd::palette::vermillion, rd::VAlign::Bottom);
   rd::renderPlotPng(plot, ctx.figurePath("gf15_hybrid_closed_loop.png"), 1300, 800);
   ctx.figure("gf15_hybrid_closed_loop.png", "Peg in a vertical hole (cylindrical pair) under the coordinate-free hybrid law: the motion "
                                             "errors decay as the gains predict (poles −2, −8); the hole's reaction from the DAE equals "
