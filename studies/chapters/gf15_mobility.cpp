@@ -2,8 +2,11 @@
 // the subalgebra (totally geodesic) criterion, Table 15.1, the Bennett loop as the paradoxical
 // exception, the flat 4-bar, and the self-motions of a singular robot (erratum E15.13 is OCR).
 #include "gf15_common.hpp"
+#include "soma/render/render.hpp"
 
 #include <Eigen/SVD>
+
+#include <array>
 
 namespace soma::studies::gf15::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
@@ -177,6 +180,332 @@ void singularRobot(Context& ctx) {
   ctx.checkEqual("with s₂ = s₅ too: kernel dimension 2 (harder for a controller)", 2, infinitesimalMobility(s2));
 }
 
+
+// ---- derived figures (catalogue ch. 15 "Figures worth reproducing" (b), (c)) ----------------------
+
+/// One pose of the Bennett 4R: DH frames F₀ = I, F_{i+1} = F_i Rz(θ_i) Tx(a_i) Rx(α_i) (F₄ = I when closed).
+struct BennettPose {
+  std::array<double, 4> th{};
+  std::array<SE3<double>, 5> F;
+};
+SE3<double> dhLink(double th, double a, double al) {
+  return SE3<double>(SO3<double>::fromAxisAngle(V3::UnitZ(), th), V3::Zero())
+      .compose(SE3<double>(SO3<double>::fromAxisAngle(V3::UnitX(), al), V3(a, 0, 0)));
+}
+BennettPose chainPose(const std::array<double, 4>& th, const std::array<double, 4>& len, const std::array<double, 4>& tw) {
+  BennettPose p;
+  p.th = th;
+  p.F[0] = SE3<double>::Identity();
+  for (int i = 0; i < 4; ++i) p.F[std::size_t(i + 1)] = p.F[std::size_t(i)].compose(dhLink(th[std::size_t(i)], len[std::size_t(i)], tw[std::size_t(i)]));
+  return p;
+}
+/// Bennett's joint relation: tan(θ₁/2) tan(θ₂/2) = sin((β+α)/2)/sin((β−α)/2), θ₃ = −θ₁, θ₄ = −θ₂ (Bennett 1903).
+std::array<double, 4> bennettAngles(double al, double be, double th1) {
+  const double K = std::sin((be + al) / 2) / std::sin((be - al) / 2);
+  const double th2 = 2 * std::atan(K / std::tan(th1 / 2));
+  return {th1, th2, -th1, -th2};
+}
+double closureError(const BennettPose& p) { return (p.F[4].matrix() - Mat4<double>::Identity()).cwiseAbs().maxCoeff(); }
+std::vector<V6> poseScrews(const BennettPose& p) {
+  std::vector<V6> s;
+  for (int i = 0; i < 4; ++i) s.push_back(lineScrew(p.F[std::size_t(i)].rotation().col(2), p.F[std::size_t(i)].translation()));
+  return s;
+}
+/// Common normal of the lines (p, u) and (q, v): length, twist angle and the foot on each line.
+struct CommonNormal {
+  double length, twist;
+  V3 footOnFirst, footOnSecond;
+};
+CommonNormal commonNormal(const V3& p, const V3& u, const V3& q, const V3& v) {
+  const V3 n = u.cross(v);
+  const double uv = u.dot(v), den = n.squaredNorm();  // > 0: consecutive Bennett axes are never parallel
+  const V3 d = q - p;
+  const double s = (d.dot(u) - uv * d.dot(v)) / den, t = (uv * d.dot(u) - d.dot(v)) / den;
+  const V3 f1 = p + s * u, f2 = q + t * v;
+  return {(f2 - f1).norm(), std::atan2(n.norm(), uv), f1, f2};
+}
+/// Smallest |log F₄(θ)| reachable from θ₀ by Levenberg–Marquardt on the open chain (forward-difference Jacobian).
+std::pair<double, std::array<double, 4>> closestClosure(const std::array<double, 4>& th0, const std::array<double, 4>& len,
+                                                       const std::array<double, 4>& tw) {
+  auto res = [&](const Eigen::Vector4d& t) {
+    return V6(chainPose({t(0), t(1), t(2), t(3)}, len, tw).F[4].log().coeffs());
+  };
+  Eigen::Vector4d t(th0[0], th0[1], th0[2], th0[3]);
+  double lambda = 1e-3;
+  V6 r = res(t);
+  for (int it = 0; it < 200; ++it) {
+    Eigen::Matrix<double, 6, 4> J;
+    for (int k = 0; k < 4; ++k) {
+      Eigen::Vector4d h = t;
+      h(k) += 1e-7;
+      J.col(k) = (res(h) - r) / 1e-7;
+    }
+    const Eigen::Matrix4d A = J.transpose() * J + lambda * Eigen::Matrix4d::Identity();
+    const Eigen::Vector4d step = -A.ldlt().solve(J.transpose() * r);
+    const V6 r2 = res(t + step);
+    if (r2.squaredNorm() < r.squaredNorm()) {
+      t += step;
+      r = r2;
+      lambda = std::max(lambda / 10, 1e-12);
+    } else {
+      lambda *= 10;
+    }
+  }
+  return {r.lpNorm<Eigen::Infinity>(), {t(0), t(1), t(2), t(3)}};
+}
+/// The second-order obstruction of a loop at θ = 0 (BCH): a kernel velocity θ̇ extends to a curve only if
+/// Q(θ̇) = Σ_{i<k} θ̇_iθ̇_k[s_i, s_k] lies in Span(s_i). B is Q's polarisation projected off the span.
+V6 obstruction(const std::vector<V6>& s, const DV& x, const DV& y) {
+  V6 q = V6::Zero();
+  for (std::size_t i = 0; i < s.size(); ++i)
+    for (std::size_t k = i + 1; k < s.size(); ++k)
+      q += 0.5 * (x(Eigen::Index(i)) * y(Eigen::Index(k)) + y(Eigen::Index(i)) * x(Eigen::Index(k))) * br(s[i], s[k]);
+  DM M(6, Eigen::Index(s.size()));
+  for (std::size_t i = 0; i < s.size(); ++i) M.col(Eigen::Index(i)) = s[i];
+  Eigen::JacobiSVD<DM> svd(M, Eigen::ComputeThinU);
+  const int r = screwSystemDimension(s);
+  const DM U = svd.matrixU().leftCols(r);
+  return q - U * (U.transpose() * q);
+}
+/// The 2×2 form n·B(k_a, k_b) on a 2-dim kernel {u, w} when B's values are parallel (to n); its determinant
+/// decides: > 0 definite (no real curve through the point), < 0 two real branches.
+double obstructionDeterminant(const std::vector<V6>& s, const DV& u, const DV& w, double& offLine) {
+  const V6 uu = obstruction(s, u, u), uw = obstruction(s, u, w), ww = obstruction(s, w, w);
+  V6 n = uu.norm() >= ww.norm() ? uu : ww;
+  if (uw.norm() > n.norm()) n = uw;
+  n.normalize();
+  offLine = std::max({(uu - uu.dot(n) * n).norm(), (uw - uw.dot(n) * n).norm(), (ww - ww.dot(n) * n).norm()});
+  return uu.dot(n) * ww.dot(n) - uw.dot(n) * uw.dot(n);
+}
+
+namespace rd = soma::render;
+void addLabel(rd::Scene& s, const V3& at, const std::string& text, Eigen::Vector2d off = {8, -8}, double px = 24,
+              rd::Color col = rd::palette::black, rd::HAlign h = rd::HAlign::Left) {
+  rd::Label l;
+  l.at = at;
+  l.text = text;
+  l.offset = off;
+  l.pixelHeight = px;
+  l.c = col;
+  l.hAlign = h;
+  s.add(l);
+}
+void addTube(rd::Scene& s, std::vector<V3> p, double r, rd::Color c) {
+  rd::Tube t;
+  t.p = std::move(p);
+  t.radius = r;
+  t.c = c;
+  s.add(t);
+}
+/// A revolute joint: a short cylinder of the given half-length about the axis (p, u).
+void addJoint(rd::Scene& s, const V3& p, const V3& u, double halfLength, double r, rd::Color c) {
+  addTube(s, {V3(p - halfLength * u), V3(p + halfLength * u)}, r, c);
+}
+void renderFigure(Context& ctx, const rd::Scene& sc, const V3& view, int w, int h, const std::string& file, const std::string& caption,
+                  bool ortho = false, const V3& up = V3::UnitZ()) {
+  rd::RenderOptions opt;
+  opt.width = w;
+  opt.height = h;
+  rd::FitOptions fo;
+  fo.width = w;
+  fo.height = h;
+  fo.orthographic = ortho;
+  fo.up = up;
+  opt.camera = rd::Camera::fit(sc, view, fo);
+  rd::renderPng(sc, opt, ctx.figurePath(file));
+  ctx.figure(file, caption);
+}
+
+// GF §15.2 lines 9647, 9682: GF-15.2-mobility-definitions (flat 4-bar), GF-15.2-completion-group-mobility (Bennett)
+void bennettFigure(Context& ctx) {
+  const double a = 1, al = 0.6, be = 1.3, b = a * std::sin(be) / std::sin(al);
+  const std::array<double, 4> len{a, b, a, b}, tw{al, be, al, be};
+  const std::vector<double> th1s = {0.5, 0.9, 1.4, 2.0, 2.6};
+  std::vector<BennettPose> poses;
+  double closeWorst = 0, bennettWorst = 0, offsetWorst = 0, libWorst = 0;
+  int rank3 = 0, mob1 = 0;
+  for (double t1 : th1s) {
+    poses.push_back(chainPose(bennettAngles(al, be, t1), len, tw));
+    const BennettPose& p = poses.back();
+    closeWorst = std::max(closeWorst, closureError(p));
+    // the link lengths and twists measured from the drawn axes (common normals of consecutive axes)
+    std::array<CommonNormal, 4> cn;
+    for (int i = 0; i < 4; ++i) {
+      const SE3<double>& A = p.F[std::size_t(i)];
+      const SE3<double>& B = p.F[std::size_t((i + 1) % 4)];
+      cn[std::size_t(i)] = commonNormal(A.translation(), A.rotation().col(2), B.translation(), B.rotation().col(2));
+    }
+    bennettWorst = std::max({bennettWorst, abs(cn[0].length - cn[2].length), abs(cn[1].length - cn[3].length),
+                             abs(cn[0].twist - cn[2].twist), abs(cn[1].twist - cn[3].twist),
+                             abs(cn[0].length * std::sin(cn[1].twist) - cn[1].length * std::sin(cn[0].twist))});
+    for (int i = 0; i < 4; ++i)  // offset d_i: the two normals meet axis i at the same point
+      offsetWorst = std::max(offsetWorst, (cn[std::size_t(i)].footOnFirst - cn[std::size_t((i + 3) % 4)].footOnSecond).norm());
+    const auto s = poseScrews(p);
+    rank3 += screwSystemDimension(s) == 3 ? 1 : 0;
+    mob1 += infinitesimalMobility(s) == 1 ? 1 : 0;
+    const auto lib = bennettLoop<double>(a, al, be, t1);
+    for (int i = 0; i < 4; ++i) libWorst = std::max(libWorst, (lib[std::size_t(i)] - s[std::size_t(i)]).cwiseAbs().maxCoeff());
+  }
+  const int nPose = int(th1s.size());
+  ctx.checkResidual("Bennett a = 1, α = 0.6, β = 1.3, five drawn poses θ₁ = 0.5 … 2.6: max |F₄ − I| (loop closes)", closeWorst, 1e-14);
+  ctx.checkResidual("measured from the drawn axes: a₁ = a₃, a₂ = a₄, α₁ = α₃, α₂ = α₄, a₁ sin α₂ = a₂ sin α₁ (max deviation)",
+                    bennettWorst, 1e-13);
+  ctx.checkResidual("offsets d_i = 0: the common normals to axes i−1 and i+1 meet axis i at one point (max gap)", offsetWorst, 1e-13);
+  ctx.checkResidual("the drawn joint screws equal bennettLoop()'s (library construction)", libWorst, 1e-14);
+  ctx.checkEqual("poses at which the four joint screws span a 3-system", nPose, rank3);
+  ctx.checkEqual("poses with loop mobility (kernel of Σθ̇_is_i = 0) = 1 — Kutzbach predicts 4 − 6 = −2", nPose, mob1);
+  // controls: the Bennett condition broken. (i) a₂ 5 % long, a₄ = b: no closure near the drawn pose
+  const std::array<double, 4> lenOne{a, 1.05 * b, a, b}, lenBoth{a, 1.05 * b, a, 1.05 * b};
+  const auto sBad = poseScrews(chainPose(bennettAngles(al, be, 1.4), lenOne, tw));
+  ctx.checkEqual("control, a₂ = 1.05 b: the four axes at the drawn angles span a 4-system", 4, screwSystemDimension(sBad));
+  const double lmGood = closestClosure({1.45, poses[2].th[1] + 0.05, -1.35, -poses[2].th[1] - 0.04}, len, tw).first;
+  const double lmOne = closestClosure(poses[2].th, lenOne, tw).first;
+  ctx.checkResidual("positive control: Levenberg–Marquardt from a perturbed θ closes the Bennett loop, min |log F₄|", lmGood, 1e-12);
+  ctx.record("control, a₂ = 1.05 b (a₄ = b): min |log F₄| reached by Levenberg–Marquardt from the pose (cannot close)", "> 1e-3",
+             toString(lmOne, 4), lmOne, 1e-3, lmOne > 1e-3);
+  // (ii) a₂ = a₄ = 1.05 b (opposite sides still equal, a/sin α ≠ b/sin β): closes, but only at an isolated pose
+  const auto [lmBoth, thBoth] = closestClosure(poses[2].th, lenBoth, tw);
+  ctx.checkResidual("control, a₂ = a₄ = 1.05 b: Levenberg–Marquardt finds a closed pose, |log F₄|", lmBoth, 1e-12);
+  ctx.checkEqual("… at which the joint screws span a 4-system: loop mobility 0 (rigid, as Kutzbach says)", 0,
+                 infinitesimalMobility(poseScrews(chainPose(thBoth, lenBoth, tw))));
+  // the flat 4-bar: joints on the x-axis at 0, 1, 2, 3 (links 1, 1, 1, ground 3)
+  const V3 z = V3::UnitZ();
+  const std::vector<double> xs = {0, 1, 2, 3};
+  std::vector<V6> flat;
+  for (double x : xs) flat.push_back(lineScrew(z, V3(x, 0, 0)));
+  ctx.checkEqual("flat 4-bar: rank of the joint screws", 2, screwSystemDimension(flat));
+  ctx.checkEqual("flat 4-bar: infinitesimal mobility 4 − 2", 2, infinitesimalMobility(flat));
+  DV u(4), w(4);
+  u << 1, -2, 1, 0;  // J₃ held (θ̇₄ = 0): J₂ moves
+  w << 0, 1, -2, 1;  // J₂ held (θ̇₁ = 0): J₃ moves
+  SM Jf(6, 4);
+  for (int i = 0; i < 4; ++i) Jf.col(i) = flat[std::size_t(i)];
+  ctx.checkResidual("the drawn infinitesimal motions (1, −2, 1, 0), (0, 1, −2, 1) are in the kernel: max |Σθ̇_is_i|",
+                    std::max(maxAbs(DV(Jf * u)), maxAbs(DV(Jf * w))), 1e-15);
+  double offLine = 0;
+  const double detFlat = obstructionDeterminant(flat, u, w, offLine);
+  ctx.checkNear("second-order obstruction Q(θ̇) = Σ_{i<k}θ̇_iθ̇_k[s_i, s_k] off the span, on the kernel: det (definite ⇒ isolated point, "
+                "mobility 0)", 3.0, detFlat, 1e-13);
+  ctx.checkResidual("(its values all lie on one line: the x-translations)", offLine, 1e-14);
+  // control: the folded rhombus (links 1, 1, 1, 1; joints at 0, 1, 0, 1) has the same kernel dimension but moves
+  std::vector<V6> rhombus;
+  for (double x : {0.0, 1.0, 0.0, 1.0}) rhombus.push_back(lineScrew(z, V3(x, 0, 0)));
+  DV ur(4), wr(4);
+  ur << 1, 0, -1, 0;
+  wr << 0, 1, 0, -1;
+  double offR = 0;
+  const double detR = obstructionDeterminant(rhombus, ur, wr, offR);
+  ctx.checkEqual("control, folded rhombus 1, 1, 1, 1: infinitesimal mobility", 2, infinitesimalMobility(rhombus));
+  ctx.checkNear("control, folded rhombus: det of the obstruction form (indefinite ⇒ two real branches cross)", -1.0, detR, 1e-13);
+  // the configuration space picture: the crank circle |J₂| = 1 touches the reach |J₂ − J₄| ≤ 2 of rocker + coupler only at J₂ = (1, 0)
+  ctx.note("Bennett linkage a = 1, α = 0.6, β = 1.3, b = a sin β / sin α = " + toString(b, 6) +
+           "; control min |log F₄| with a₂ = 1.05 b: " + toString(lmOne, 4) + "; closed pose with a₂ = a₄ = 1.05 b at θ = (" +
+           toString(thBoth[0], 4) + ", " + toString(thBoth[1], 4) + ", " + toString(thBoth[2], 4) + ", " + toString(thBoth[3], 4) + ").");
+  if (!ctx.makeFigures()) return;
+
+  // ---- Bennett figure ----
+  {
+    rd::Scene sc;
+    sc.title = "Bennett's 4R loop (GF §15.2): overconstrained, yet it moves";
+    const rd::Color ground = rd::palette::darkGrey;
+    const double jr = 0.055, jh = 0.22, lr = 0.03;
+    // the fixed link 4 (J₄ → J₁) and the fixed axes 1 and 4
+    const V3 p1 = poses[0].F[0].translation(), u1 = poses[0].F[0].rotation().col(2);
+    const V3 p4 = poses[0].F[3].translation(), u4 = poses[0].F[3].rotation().col(2);
+    addTube(sc, {p4, p1}, 1.4 * lr, ground);
+    addJoint(sc, p1, u1, jh, jr, ground);
+    addJoint(sc, p4, u4, jh, jr, ground);
+    for (const auto& [p, uu] : {std::pair(p1, u1), std::pair(p4, u4)}) {
+      rd::Polyline ax;
+      ax.p = {V3(p - 0.9 * uu), V3(p + 0.9 * uu)};
+      ax.c = rd::palette::grey;
+      ax.dashed = true;
+      sc.add(ax);
+    }
+    // the paths of J₂ (circle about axis 1) and J₃ (circle about axis 4) over the whole motion
+    rd::Polyline c2, c3;
+    for (int k = 1; k < 200; ++k) {
+      const BennettPose q = chainPose(bennettAngles(al, be, pi<double>() * k / 200), len, tw);
+      c2.p.push_back(q.F[1].translation());
+      c3.p.push_back(q.F[2].translation());
+    }
+    c2.c = c3.c = rd::palette::grey;
+    c2.width = c3.width = 1.5;
+    sc.add(c2);
+    sc.add(c3);
+    for (std::size_t k = 0; k < poses.size(); ++k) {
+      const rd::Color col = rd::colorMap(0.85 * double(k) / double(poses.size() - 1));
+      const BennettPose& p = poses[k];
+      const V3 j2 = p.F[1].translation(), j3 = p.F[2].translation();
+      addTube(sc, {p1, j2}, lr, col);
+      addTube(sc, {j2, j3}, lr, col);
+      addTube(sc, {j3, p4}, lr, col);
+      addJoint(sc, j2, p.F[1].rotation().col(2), jh, jr, col);
+      addJoint(sc, j3, p.F[2].rotation().col(2), jh, jr, col);
+      addLabel(sc, j2, "θ₁ = " + toString(th1s[k], 2), {10, -6}, 20, col.darker(0.2f));
+    }
+    addLabel(sc, V3(p1 + 0.9 * u1), "fixed axis 1", {8, 0}, 22, ground);
+    addLabel(sc, V3(p4 + 0.9 * u4), "fixed axis 4", {8, 0}, 22, ground);
+    renderFigure(ctx, sc, V3(-0.3, -0.8, -0.9), 1200, 950, "gf15_bennett.png",
+                 "Bennett's 4R loop, a = 1, α = 0.6, β = 1.3, b = a sin β/sin α = " + toString(b, 4) +
+                     ", offsets 0, at five positions θ₁ = 0.5 … 2.6 (dark to light; θ₂ from tan(θ₁/2)tan(θ₂/2) = "
+                     "sin((β+α)/2)/sin((β−α)/2), θ₃ = −θ₁, θ₄ = −θ₂). Link 4 and axes 1, 4 are fixed (grey); the moving joints 2 and 3 "
+                     "travel on circles about axes 1 and 4 (thin grey). At each pose F₄ = I to " + toString(closeWorst, 2) +
+                     " and the four joint screws span a 3-system: mobility 1 where Kutzbach–Grübler gives −2.");
+  }
+  // ---- flat 4-bar figure (top view) ----
+  {
+    rd::Scene sc;
+    sc.title = "The flat 4-bar: one configuration, infinitesimal mobility 2";
+    const rd::Color lc = rd::palette::blue;
+    std::vector<V3> J;
+    for (double x : xs) J.push_back(V3(x, 0, 0));
+    // the crank circle of J₂ about J₁ and the boundary of the reach of J₂ through rocker and coupler (|J₂ − J₄| ≤ 2)
+    rd::Polyline crank, reach;
+    for (int k = 0; k <= 240; ++k) {
+      const double t = 2 * pi<double>() * k / 240;
+      crank.p.push_back(V3(std::cos(t), std::sin(t), -0.02));
+      reach.p.push_back(V3(3 + 2 * std::cos(t), 2 * std::sin(t), -0.02));
+    }
+    crank.c = rd::palette::bluishGreen;
+    reach.c = rd::palette::orange;
+    crank.width = reach.width = 2.5;
+    reach.dashed = true;
+    sc.add(crank);
+    sc.add(reach);
+    addTube(sc, {J[0], J[3]}, 0.03, rd::palette::darkGrey);  // ground, drawn below the links
+    for (int i = 0; i < 3; ++i) addTube(sc, {V3(J[std::size_t(i)] + V3(0, 0, 0.08)), V3(J[std::size_t(i + 1)] + V3(0, 0, 0.08))}, 0.035, lc);
+    for (int i = 0; i < 4; ++i) {
+      addJoint(sc, V3(J[std::size_t(i)] + V3(0, 0, 0.04)), z, 0.08, 0.075, i == 0 || i == 3 ? rd::palette::darkGrey : lc);
+      addLabel(sc, J[std::size_t(i)], "J" + std::string(i == 0 ? "₁" : i == 1 ? "₂" : i == 2 ? "₃" : "₄"), {0, 18}, 24,
+               rd::palette::black, rd::HAlign::Center);
+      sc.labels.back().vAlign = rd::VAlign::Top;
+    }
+    // the two independent infinitesimal motions: velocities of J₂ and J₃ from the kernel vectors u, w
+    auto vel = [&](const DV& td, int joint) {  // twist of the link ending at J_{joint+1} (links from the ground through J₁)
+      V6 t = V6::Zero();
+      for (int i = 0; i < joint; ++i) t += td(i) * flat[std::size_t(i)];
+      const V3 p = J[std::size_t(joint)];
+      return V3(t.tail<3>() + t.head<3>().cross(p));
+    };
+    const double sc8 = 0.45;
+    sc.add(rd::Arrow{V3(J[1] + V3(0, 0, 0.1)), V3(J[1] + V3(0, 0, 0.1) + sc8 * vel(u, 1)), rd::palette::vermillion, 0.025});
+    sc.add(rd::Arrow{V3(J[2] + V3(0, 0, 0.1)), V3(J[2] + V3(0, 0, 0.1) + sc8 * vel(w, 2)), rd::palette::reddishPurple, 0.025});
+    addLabel(sc, V3(J[1] + sc8 * vel(u, 1)), "δθ = (1, −2, 1, 0): J₂ moves", {-8, -4}, 22, rd::palette::vermillion, rd::HAlign::Right);
+    addLabel(sc, V3(J[2] + sc8 * vel(w, 2)), "δθ = (0, 1, −2, 1): J₃ moves", {8, -4}, 22, rd::palette::reddishPurple);
+    addLabel(sc, V3(0, -1, 0), "crank circle |J₂ − J₁| = 1", {0, 8}, 22, rd::palette::bluishGreen, rd::HAlign::Center);
+    sc.labels.back().vAlign = rd::VAlign::Top;
+    addLabel(sc, V3(3.3, -1.2, 0), "J₂ reachable via J₃: |J₂ − J₄| ≤ 2", {0, 0}, 22, rd::palette::orange, rd::HAlign::Center);
+    renderFigure(ctx, sc, V3(0, 0, -1), 1200, 800, "gf15_flat_4bar.png",
+                 "The flat 4-bar (links 1, 1, 1 on the ground 3, all joints on one line), seen from above. The crank circle of J₂ "
+                 "(green) touches the region J₂ can reach through rocker and coupler (inside the dashed circle) only at J₂ = (1, 0): "
+                 "the configuration space is one point, mobility 0. The joint screws span only a 2-system, so Σθ̇_is_i = 0 has a "
+                 "2-dimensional kernel: J₂ and J₃ can start to move independently (arrows), infinitesimal mobility 2. The "
+                 "second-order term Σθ̇_iθ̇_k[s_i, s_k] is definite on that kernel (det 3), so no real motion follows.",
+                 true, V3::UnitY());
+  }
+}
+
 }  // namespace
 
 #define GF15(ID, TITLE, SRC, FN) \
@@ -187,6 +516,8 @@ GF15("GF-15.2-completion-group-mobility", "m = n − dim Δ∞: planar and spher
 GF15("GF-15.2-totally-geodesic-subalgebra", "Subalgebra ⟺ totally geodesic image (line 9674, erratum E15.13)", "GF §15.2", totallyGeodesic);
 GF15("GF-15.2-table-15.1", "Table 15.1: the ten screw systems guaranteeing full-cycle mobility are subalgebras", "GF §15.2", table);
 GF15("GF-15.2-singular-robot-mobility", "A 6R held at its end effector: singular iff infinitesimally mobile; self-motions", "GF §15.2", singularRobot);
+GF15("GF-15-fig-bennett", "Derived figure: Bennett's overconstrained 4R in motion; the flat 4-bar (mobility 0, infinitesimal 2)",
+     "GF §15.2", bennettFigure);
 #undef GF15
 
 }  // namespace soma::studies::gf15::SOMA_UNITY_ID
