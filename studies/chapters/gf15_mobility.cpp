@@ -506,6 +506,151 @@ void bennettFigure(Context& ctx) {
   }
 }
 
+/// A joint of a Table 15.1 joint set: revolute, prismatic or helical about the line (point, dir).
+struct DrawnJoint {
+  char kind;  // 'R', 'P', 'H'
+  V3 dir, at;
+  V6 screw(double p) const {
+    if (kind == 'P') {
+      V6 s;
+      s << V3::Zero(), dir;
+      return s;
+    }
+    return lineScrew(dir, at, kind == 'H' ? p : 0.0);
+  }
+};
+/// A closed box (12 triangles) centred at c with half-extents h along the orthonormal axes e0, e1, e2.
+rd::Mesh box(const V3& c, const V3& e0, const V3& e1, const V3& e2, const V3& h, rd::Color col) {
+  rd::Mesh m;
+  for (int k = 0; k < 8; ++k)
+    m.v.push_back(V3(c + ((k & 1) ? h(0) : -h(0)) * e0 + ((k & 2) ? h(1) : -h(1)) * e1 + ((k & 4) ? h(2) : -h(2)) * e2));
+  const int f[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : f) {
+    m.tri.emplace_back(q[0], q[1], q[2]);
+    m.tri.emplace_back(q[0], q[2], q[3]);
+  }
+  m.c = col;
+  return m;
+}
+void drawJoint(rd::Scene& sc, const DrawnJoint& j, const V3& centre, double p) {
+  const V3 a = centre + j.at, u = j.dir.normalized();
+  const V3 e1 = (abs(u.z()) < 0.9 ? u.cross(V3::UnitZ()) : u.cross(V3::UnitX())).normalized(), e2 = u.cross(e1);
+  rd::Polyline ax;
+  ax.p = {V3(a - 0.75 * u), V3(a + 0.75 * u)};
+  ax.c = rd::palette::grey;
+  ax.dashed = true;
+  ax.dashLength = 6;
+  ax.width = 1.5;
+  if (j.kind == 'R') {
+    sc.add(ax);
+    addJoint(sc, a, u, 0.3, 0.1, rd::palette::blue);
+  } else if (j.kind == 'P') {
+    addTube(sc, {V3(a - 0.6 * u), V3(a + 0.6 * u)}, 0.025, rd::palette::darkGrey);
+    sc.add(box(a, u, e1, e2, V3(0.17, 0.1, 0.1), rd::palette::vermillion));
+  } else {
+    sc.add(ax);
+    addTube(sc, {V3(a - 0.55 * u), V3(a + 0.55 * u)}, 0.03, rd::palette::darkGrey);
+    std::vector<V3> hx;
+    const double turns = 1.1 / (2 * pi<double>() * p);  // axial length 1.1 at p per radian
+    for (int k = 0; k <= 400; ++k) {
+      const double t = 2 * pi<double>() * turns * (k / 400.0 - 0.5);
+      hx.push_back(V3(a + p * t * u + 0.13 * (std::cos(t) * e1 + std::sin(t) * e2)));
+    }
+    addTube(sc, hx, 0.025, rd::palette::bluishGreen);
+  }
+}
+
+// GF §15.2 lines 9688–9704, GF-15.2-table-15.1: the ten subgroups as the joint sets that generate them
+void tableFigure(Context& ctx) {
+  const double p = 0.1;
+  const auto rows = table15_1<double>(p);
+  const V3 X = V3::UnitX(), Y = V3::UnitY(), Z = V3::UnitZ(), O = V3::Zero();
+  const V3 q1(0, 0.5, 0.35), q2(0, -0.5, 0.35), q3(0, 0, -0.45);  // three parallel axes of the planar sets
+  struct Panel {
+    std::string name;
+    std::vector<DrawnJoint> joints;
+  };
+  const std::vector<Panel> panels = {
+      {"ℝ (IIB): P", {{'P', X, O}}},
+      {"Hₚ (IA, p ≠ 0): H", {{'H', X, O}}},
+      {"SO(2) (IA, p = 0): R", {{'R', X, O}}},
+      {"ℝ² (IIC): PP", {{'P', X, V3(0, 0, 0.3)}, {'P', Y, V3(0, 0, -0.35)}}},
+      {"SO(2) × ℝ (IB₀): C = RP", {{'R', X, V3(-0.4, 0, 0)}, {'P', X, V3(0.45, 0, 0)}}},
+      {"ℝ³ (IID): PPP", {{'P', X, V3(0, 0, 0.45)}, {'P', Y, V3(0, 0, 0)}, {'P', Z, V3(0.55, 0, 0)}}},
+      {"SO(3) (IIA): 3R concurrent", {{'R', X, O}, {'R', Y, O}, {'R', Z, O}}},
+      {"SE(2) (IIC, p = 0): 3R ∥", {{'R', X, q1}, {'R', X, q2}, {'R', X, q3}}},
+      {"Hₚ ⋉ ℝ² (IIC, p ≠ 0): 3H ∥", {{'H', X, q1}, {'H', X, q2}, {'H', X, q3}}},
+      {"SE(2) × ℝ (IIC‾): 3R ∥ + P", {{'R', X, q1}, {'R', X, q2}, {'R', X, q3}, {'P', X, V3(0, 0, -0.95)}}}};
+  auto g = std::mt19937_64(1527);
+  int sameSpan = 0, closed = 0;
+  double defect = 0, logOff = 0;
+  auto span = [](const std::vector<V6>& s) {
+    DM M(6, Eigen::Index(s.size()));
+    for (std::size_t i = 0; i < s.size(); ++i) M.col(Eigen::Index(i)) = s[i];
+    Eigen::JacobiSVD<DM> svd(M, Eigen::ComputeThinU);
+    return DM(svd.matrixU().leftCols(screwSystemDimension(s)));
+  };
+  auto product = [](const std::vector<V6>& s, const DV& th) {
+    SE3<double> r = SE3<double>::Identity();
+    for (std::size_t i = 0; i < s.size(); ++i) r = r.compose(SE3Tangent<double>(V6(th(Eigen::Index(i)) * s[i])).exp());
+    return r;
+  };
+  for (std::size_t k = 0; k < panels.size(); ++k) {
+    std::vector<V6> s;
+    for (const auto& j : panels[k].joints) s.push_back(j.screw(p));
+    std::vector<V6> both = s;
+    both.insert(both.end(), rows[k].basis.begin(), rows[k].basis.end());
+    const int d = int(rows[k].basis.size());
+    sameSpan += (screwSystemDimension(s) == d && screwSystemDimension(both) == d) ? 1 : 0;
+    closed += isSubalgebra(s) ? 1 : 0;
+    defect = std::max(defect, subalgebraDefect(s));
+    const DM U = span(s);
+    for (int t = 0; t < 10; ++t) {  // the joint set moves only inside its subgroup: log ρ(θ) ∈ Span(s_i)
+      const V6 l = product(s, rvec(g, int(s.size()))).log().coeffs();
+      logOff = std::max(logOff, (l - U * (U.transpose() * l)).norm());
+    }
+  }
+  ctx.checkEqual("drawn joint sets whose screws span exactly the row's normal form (p = 0.1)", 10, sameSpan);
+  ctx.checkEqual("drawn joint sets closed under the bracket", 10, closed);
+  ctx.checkResidual("max distance of a bracket of drawn screws from their span", defect, 1e-15);
+  ctx.checkResidual("10 random θ ∈ [−1, 1]ⁿ per set: max distance of log(e^{θ₁s₁}···e^{θₙsₙ}) from the span", logOff, 1e-13);
+  // control: the SE(2) set with its third axis tilted by 0.1 rad about y — no longer a subalgebra
+  std::vector<V6> tilted;
+  for (const auto& j : panels[7].joints) tilted.push_back(j.screw(p));
+  tilted[2] = lineScrew(V3(std::cos(0.1), 0, std::sin(0.1)), q3);
+  ctx.checkEqual("control: SE(2) set with one axis tilted by 0.1 rad is not a subalgebra", 0, isSubalgebra(tilted) ? 1 : 0);
+  ctx.checkEqual("… its completion algebra is all of se(3) (dim Δ∞)", 6, int(completionAlgebra(tilted).cols()));
+  double tiltOff = 0;
+  const DM Ut = span(tilted);
+  for (int t = 0; t < 10; ++t) {
+    const V6 l = product(tilted, rvec(g, 3)).log().coeffs();
+    tiltOff = std::max(tiltOff, (l - Ut * (Ut.transpose() * l)).norm());
+  }
+  ctx.record("control: tilted set, max distance of log ρ(θ) from the span (leaves it)", "> 1e-3", toString(tiltOff, 4), tiltOff, 1e-3,
+             tiltOff > 1e-3);
+  if (!ctx.makeFigures()) return;
+  rd::Scene sc;
+  sc.title = "Table 15.1: joint sets whose screws form a subalgebra (full-cycle mobility)";
+  const V3 view = V3(0.55, 1, -0.45).normalized();
+  const V3 right = view.cross(Z).normalized(), up = right.cross(view);
+  const double dx = 2.7, dy = 2.55;
+  for (std::size_t k = 0; k < panels.size(); ++k) {
+    const int col = int(k % 5), row = int(k / 5);
+    const V3 c = (col - 2) * dx * right - row * dy * up;
+    for (const auto& j : panels[k].joints) drawJoint(sc, j, c, p);
+    if (k == 6) sc.add(rd::sphere(c, 0.16, rd::palette::lightGrey.darker(0.2f)));
+    addLabel(sc, V3(c + 1.15 * up), panels[k].name, {0, 0}, 21, rd::palette::black, rd::HAlign::Center);
+    sc.labels.back().vAlign = rd::VAlign::Middle;
+  }
+  renderFigure(ctx, sc, view, 1500, 760, "gf15_table15_1.png",
+               "The ten rows of Table 15.1 drawn as joint sets (p = 0.1 m/rad): revolute R (blue cylinder), prismatic P "
+               "(vermillion slider on a rail), helical H (green helix); the first seven are the normal forms themselves, "
+               "SE(2) is drawn as three parallel revolutes (a planar 3R), Hₚ ⋉ ℝ² as three parallel helicals of equal pitch, "
+               "SE(2) × ℝ as a planar 3R with a prismatic joint along the axes (Schoenflies). Each set's screws span the "
+               "row's normal form and are closed under the bracket, so a loop built from them keeps its mobility over the whole cycle.",
+               true);
+}
+
 }  // namespace
 
 #define GF15(ID, TITLE, SRC, FN) \
@@ -518,6 +663,7 @@ GF15("GF-15.2-table-15.1", "Table 15.1: the ten screw systems guaranteeing full-
 GF15("GF-15.2-singular-robot-mobility", "A 6R held at its end effector: singular iff infinitesimally mobile; self-motions", "GF §15.2", singularRobot);
 GF15("GF-15-fig-bennett", "Derived figure: Bennett's overconstrained 4R in motion; the flat 4-bar (mobility 0, infinitesimal 2)",
      "GF §15.2", bennettFigure);
+GF15("GF-15-fig-table-15.1", "Derived figure: the ten subgroups of Table 15.1 drawn as their joint sets", "GF §15.2", tableFigure);
 #undef GF15
 
 }  // namespace soma::studies::gf15::SOMA_UNITY_ID
