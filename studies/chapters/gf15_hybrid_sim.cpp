@@ -185,6 +185,176 @@ Run simulate(const Peg& peg, double h, bool secondFundamental) {
   return run;
 }
 
+// ---- A constraint that is not a subgroup: a point of the peg slides on a sphere (five freedoms) ----
+// The constraint wrench W(g) = (r × n, n) (a force along the normal n through the contact point r) turns with
+// the pose, so the differentiated constraint WᵀV̇ = κ := −ẆᵀV is not zero: the constraint manifold is curved
+// in SE(3) and the reaction contains the wrench N₆(normal part of V̇) that the curvature demands.
+struct Sphere {
+  Peg peg;
+  V3 tip{0, 0, -0.1};  // the contact point of the peg (body frame)
+  V3 centre{0.1, 0, -0.4};
+  double radius = std::sqrt(0.1 * 0.1 + 0.3 * 0.3);
+  V3 point(const SE3<double>& g) const { return g.act(tip); }
+  V6 wrench(const SE3<double>& g) const {
+    const V3 r = point(g), n = (r - centre).normalized();
+    V6 w;
+    w << r.cross(n), n;
+    return w;
+  }
+  /// κ = −ẆᵀV (the θ̈-free part of the differentiated constraint WᵀV = 0).
+  double curvature(const SE3<double>& g, const V6& V) const {
+    const V3 r = point(g), d = r - centre;
+    const double l = d.norm();
+    const V3 n = d / l, rd = V.head<3>().cross(r) + V.tail<3>();
+    const V3 nd = (rd - n * n.dot(rd)) / l;
+    V6 wd;
+    wd << rd.cross(n) + r.cross(nd), nd;
+    return -wd.dot(V);
+  }
+  DM freedoms(const SE3<double>& g) const { return DM(nullSpace<double>(DynMatrix<double>(wrench(g).transpose()))); }
+  /// The DAE N₆V̇ + {V, N₆V} = F + λW, WᵀV̇ = κ (GF §14.2.2 line 8950 with a pose-dependent W).
+  std::pair<V6, double> solve(const SE3<double>& g, const V6& V, const V6& F) const {
+    const M6 N = peg.inertia(g);
+    const V6 W = wrench(g);
+    Eigen::Matrix<double, 7, 7> K = Eigen::Matrix<double, 7, 7>::Zero();
+    K.topLeftCorner<6, 6>() = N;
+    K.topRightCorner<6, 1>() = -W;
+    K.bottomLeftCorner<1, 6>() = W.transpose();
+    Eigen::Matrix<double, 7, 1> rhs;
+    rhs << F - coadjointBrace<double>(V, V6(N * V)), curvature(g, V);
+    const Eigen::Matrix<double, 7, 1> x = K.partialPivLu().solve(rhs);
+    return {V6(x.head<6>()), x(6)};
+  }
+};
+
+constexpr double kKdSphere = 4;
+/// q̇_d: a constant screw that is NOT tangent to the constraint (the law uses its projection AAᵀN₆q̇_d, which turns with
+/// the pose): the motion is not a one-parameter subgroup, so the constraint's curvature acts (κ ≠ 0). For a turn about an
+/// axis through the centre (a subgroup inside the constraint manifold) V̇ = 0 and κ would vanish.
+V6 sphereReference(const Sphere&) { return V6(0.5, -0.4, 2.0, 0.3, 0.4, -0.2); }
+
+struct SphereControl {
+  V6 wrench, commanded, bookTerm, qe, curvatureWrench;
+};
+/// The hybrid law on the sphere: V̇_c = AAᵀ{q̇_e, N₆q̇_e} + K_d q̇_e (+ the normal acceleration N₆⁻¹Wκ/(WᵀN₆⁻¹W) that the
+/// curvature of the constraint demands, if compensate), W = N₆V̇_c + {V, N₆V} − G + XXᵀN₆⁻¹W_d.
+SphereControl sphereControl(const Sphere& sp, double t, const SE3<double>& g, const V6& V, bool compensate) {
+  SphereControl c;
+  const M6 N = sp.peg.inertia(g);
+  const HybridProjectors<double> p = n6Projectors<double>(sp.freedoms(g), N);
+  c.qe = hybridVelocityError<double>(p, N, sphereReference(sp), V);
+  c.bookTerm = hybridAccelerationError<double>(p, N, V6::Zero(), V6::Zero(), c.qe);
+  const V6 W = sp.wrench(g), NiW = N.ldlt().solve(W);
+  const V6 an = NiW * (sp.curvature(g, V) / W.dot(NiW));
+  c.curvatureWrench = N * an;
+  const V6 Vc = c.bookTerm + kKdSphere * c.qe + (compensate ? an : V6::Zero());
+  const V6 Wf = V6(DV(forceControlTorque<double>(p, desiredWrench(t), DM(M6::Identity()))));
+  c.wrench = N * Vc + coadjointBrace<double>(V, V6(N * V)) - sp.peg.gravity(g) + Wf;
+  c.commanded = -Wf;
+  return c;
+}
+
+struct SphereRun {
+  double driftBefore = 0, driftAfter = 0, forceErr = 0, curvDev = 0, curvMax = 0, bookTerm = 0, energyErr = 0, qe0 = 0, qeT = 0;
+  std::vector<double> t, qe;
+};
+/// Start on the sphere (identity pose) with q̇_d disturbed, projected N₆-orthogonally onto the tangent space.
+RigidBodyState<double> sphereStart(const Sphere& sp) {
+  V6 V0 = sphereReference(sp) + V6(0.4, -0.3, 0.2, 0.05, 0.1, -0.08);
+  const M6 N0 = sp.peg.inertia(SE3<double>::Identity());
+  const V6 W0 = sp.wrench(SE3<double>::Identity()), NiW0 = N0.ldlt().solve(W0);
+  V0 -= NiW0 * (W0.dot(V0) / W0.dot(NiW0));
+  return {SE3<double>::Identity(), SE3Tangent<double>(V0)};
+}
+/// | |r − o| − ρ | after one RKMK4 step of length h from the start (the local truncation error, O(h⁵)).
+double sphereStepDrift(const Sphere& sp, double h) {
+  int stage = 0;
+  auto accel = [&](const SE3<double>& g, const SE3Tangent<double>& s) {
+    const double ts = std::array<double, 4>{0, h / 2, h / 2, h}[std::size_t(std::min(stage++, 3))];
+    const SphereControl cs = sphereControl(sp, ts, g, s.coeffs(), true);
+    return SE3Tangent<double>(sp.solve(g, s.coeffs(), V6(cs.wrench + sp.peg.gravity(g))).first);
+  };
+  const RigidBodyState<double> y = rkmk4Step(sphereStart(sp), h, accel);
+  return std::abs((sp.point(y.pose) - sp.centre).norm() - sp.radius);
+}
+SphereRun simulateSphere(const Sphere& sp, double h, bool compensate) {
+  using std::abs;
+  SphereRun run;
+  RigidBodyState<double> y = sphereStart(sp);
+  const int steps = int(std::lround(kT / h));
+  std::vector<double> power;
+  double ek0 = 0, ek = 0;
+  for (int k = 0; k <= steps; ++k) {
+    const double t = k * h;
+    const V6 V = y.velocity.coeffs();
+    const SphereControl c = sphereControl(sp, t, y.pose, V, compensate);
+    const V6 G = sp.peg.gravity(y.pose);
+    const auto [Vd, lam] = sp.solve(y.pose, V, V6(c.wrench + G));
+    (void)Vd;
+    const V6 R = lam * sp.wrench(y.pose);
+    run.forceErr = std::max(run.forceErr, (R - c.commanded).cwiseAbs().maxCoeff());
+    run.curvDev = std::max(run.curvDev, (R - c.commanded - (compensate ? V6::Zero() : c.curvatureWrench)).cwiseAbs().maxCoeff());
+    run.curvMax = std::max(run.curvMax, c.curvatureWrench.cwiseAbs().maxCoeff());
+    run.bookTerm = std::max(run.bookTerm, c.bookTerm.cwiseAbs().maxCoeff());
+    const M6 N = sp.peg.inertia(y.pose);
+    const double qeN = std::sqrt(c.qe.dot(N * c.qe));
+    if (k == 0) run.qe0 = qeN;
+    run.qeT = qeN;
+    run.t.push_back(t);
+    run.qe.push_back(qeN);
+    power.push_back((c.wrench + G).dot(V));
+    ek = V.dot(N * V) / 2;
+    if (k == 0) ek0 = ek;
+    if (k == steps) break;
+    int stage = 0;
+    const double stageT[4] = {t, t + h / 2, t + h / 2, t + h};
+    auto accel = [&](const SE3<double>& g, const SE3Tangent<double>& s) {
+      const double ts = stageT[std::min(stage++, 3)];
+      const SphereControl cs = sphereControl(sp, ts, g, s.coeffs(), compensate);
+      return SE3Tangent<double>(sp.solve(g, s.coeffs(), V6(cs.wrench + sp.peg.gravity(g))).first);
+    };
+    y = rkmk4Step(y, h, accel);
+    // drift (truncation: the manifold is curved), then project the point back onto the sphere and V onto WᵀV = 0
+    const V3 r = sp.point(y.pose), d = r - sp.centre;
+    run.driftBefore = std::max({run.driftBefore, abs(d.norm() - sp.radius), abs(sp.wrench(y.pose).dot(y.velocity.coeffs()))});
+    const SE3<double> gp(y.pose.so3(), V3(y.pose.translation() + (sp.centre + d * (sp.radius / d.norm()) - r)));
+    const M6 Np = sp.peg.inertia(gp);
+    const V6 Wp = sp.wrench(gp), NiWp = Np.ldlt().solve(Wp);
+    V6 Vp = y.velocity.coeffs();
+    Vp -= NiWp * (Wp.dot(Vp) / Wp.dot(NiWp));
+    y = {gp, SE3Tangent<double>(Vp)};
+    run.driftAfter = std::max({run.driftAfter, abs((sp.point(gp) - sp.centre).norm() - sp.radius), abs(Wp.dot(Vp))});
+  }
+  double w = power.front() + power.back();
+  for (std::size_t i = 1; i + 1 < power.size(); ++i) w += (i % 2 ? 4 : 2) * power[i];
+  run.energyErr = abs(ek - ek0 - w * h / 3);
+  return run;
+}
+
+void sphereContact(Context& ctx) {
+  const Sphere sp;
+  const SphereRun full = simulateSphere(sp, 0.01, true), printed = simulateSphere(sp, 0.01, false);
+  ctx.checkResidual("sphere contact (not a subgroup): drift after projection (|r − o| − ρ, WᵀV), max", full.driftAfter, 1e-14);
+  {  // before projection a step leaves the curved manifold by its local truncation error O(h⁵)
+    const double d1 = sphereStepDrift(sp, 0.01), d2 = sphereStepDrift(sp, 0.005);
+    ctx.checkNear("… one RKMK4 step leaves the sphere by O(h⁵): drift(h = 0.01) : drift(0.005) ⇒ 32 (" + toString(d1, 2) + " : " +
+                      toString(d2, 2) + "; max over the run before projection, h = 0.01: " + toString(full.driftBefore, 2) + ")",
+                  32.0, d1 / d2, 4.0);
+  }
+  ctx.checkResidual("sphere: reaction λW of the DAE = commanded −XXᵀN₆⁻¹W_d, with the curvature acceleration N₆⁻¹Wκ/(WᵀN₆⁻¹W) in the law",
+                    full.forceErr, 1e-12);
+  ctx.checkEqual("sphere: without it (only tangential commands AAᵀ…, as in the book's q̈_e) the force error is > 0.1", 1,
+                 printed.forceErr > 0.1 ? 1 : 0);
+  ctx.checkResidual("… and that error IS the curvature wrench Wκ/(WᵀN₆⁻¹W), κ = −ẆᵀV (max deviation)", printed.curvDev, 1e-12);
+  ctx.checkEqual("sphere: the book's AAᵀ{q̇_e, N₆q̇_e} is not zero along the run (> 1e-3)", 1, full.bookTerm > 1e-3 ? 1 : 0);
+  ctx.note("Sphere contact (h = 0.01): q̇_d = (0.5, −0.4, 2, 0.3, 0.4, −0.2) is not tangent and no q̈_d feed-forward is given, so q̇_e "
+           "settles to a small steady value: |q̇_e|_N₆ from " + toString(full.qe0, 3) + " to " + toString(full.qeT, 3) +
+           "; curvature wrench Wκ/(WᵀN₆⁻¹W) up to " + toString(printed.curvMax, 3) + "; reaction − commanded " + toString(full.forceErr, 2) +
+           " (compensated), " + toString(printed.forceErr, 3) + " (tangential commands only); drift before projection " +
+           toString(full.driftBefore, 2) + ", after " + toString(full.driftAfter, 2) + "; energy error " + toString(full.energyErr, 2) + " J.");
+  ctx.checkResidual("sphere: |ΔE_K − ∫(W + G)ᵀV dt| (h = 0.01)", full.energyErr, 1e-6);
+}
+
 void closedLoop(Context& ctx) {
   const Peg peg;
   const double h = 0.005;
@@ -233,6 +403,7 @@ void closedLoop(Context& ctx) {
   const Run e1 = simulate(peg, 0.02, true), e2 = simulate(peg, 0.01, true);
   ctx.checkResidual("|ΔE_K − ∫(W + G)ᵀV dt| with h = 0.005 (J; RKMK4 + Simpson)", full.energyErr, 1e-7);
   ctx.checkNear("energy error ratio h = 0.02 : h = 0.01 (order 4 ⇒ 16)", 16.0, e1.energyErr / e2.energyErr, 4.0);
+  sphereContact(ctx);
   ctx.note("Peg 1.2 kg, centre of mass (0.05, −0.03, 0.12) m, hole axis = z (vertical), g = 9.81; gains K_p = 16, K_d = 10. Max drift " +
            toString(full.drift, 2) + "; motion vs prediction " + toString(full.predDev, 2) + "; late rate " + toString(rate, 8) +
            "; reaction − commanded " + toString(full.forceErrMax, 2) + " (full law), " + toString(flat.forceErrMax, 3) +
