@@ -6,6 +6,8 @@
 // its centre of mass off the axis and a tilted inertia tensor, under gravity. The controller is the
 // book's: q̇_e = AAᵀN₆(q̇_d − q̇₆), the covariant feed-forward AAᵀN₆q̈_d + AAᵀ{q̇_e, N₆q̇_e}, exact
 // cancellation of {V, N₆V} and gravity, and the force part XXᵀN₆⁻¹W_d = N₆YᵀYW_d (τ^f with J = I).
+// Second plant: a point of the peg sliding on a sphere (five freedoms, not a subgroup), where the reaction stays
+// equal to the commanded wrench only if the law also commands the normal acceleration the curvature demands (E15.16).
 #include "gf15_common.hpp"
 
 #include "soma/geometry/dynamics/free_body.hpp"
@@ -455,7 +457,7 @@ void closedLoop(Context& ctx) {
 }  // namespace
 
 SOMA_STUDY({.id = "GF-15.4.4-hybrid-closed-loop",
-            .title = "Hybrid law in closed loop: peg in hole, ch. 14 DAE, reaction = commanded wrench",
+            .title = "Hybrid law in closed loop (ch. 14 DAE): peg in hole and point on a sphere, reaction = commanded wrench (finding E15.16)",
             .source = "GF §15.4.4, §14.2.2",
             .chapter = kChapter,
             .scalarGeneric = false,
