@@ -303,16 +303,12 @@ void addJoint(rd::Scene& s, const V3& p, const V3& u, double halfLength, double 
 }
 void renderFigure(Context& ctx, const rd::Scene& sc, const V3& view, int w, int h, const std::string& file, const std::string& caption,
                   bool ortho = false, const V3& up = V3::UnitZ()) {
-  rd::RenderOptions opt;
-  opt.width = w;
-  opt.height = h;
   rd::FitOptions fo;
   fo.width = w;
   fo.height = h;
   fo.orthographic = ortho;
   fo.up = up;
-  opt.camera = rd::Camera::fit(sc, view, fo);
-  rd::renderPng(sc, opt, ctx.figurePath(file));
+  rd::renderPng(sc, view, fo, ctx.figurePath(file));
   ctx.figure(file, caption);
 }
 
