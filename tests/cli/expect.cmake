@@ -4,6 +4,12 @@
 execute_process(COMMAND ${CMD} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
                 TIMEOUT 600)
 set(all "${out}${err}")
+# SOMA_CLI_SNAPSHOT=DIR: also keep each command's exit code and output in DIR/<test name>.txt, so
+# that two builds' CLI outputs can be compared byte for byte (scripts/cli_snapshot.sh).
+if(DEFINED ENV{SOMA_CLI_SNAPSHOT} AND DEFINED NAME)
+  string(MAKE_C_IDENTIFIER "${NAME}" file)
+  file(WRITE "$ENV{SOMA_CLI_SNAPSHOT}/${file}.txt" "exit ${rc}\n--- stdout ---\n${out}--- stderr ---\n${err}")
+endif()
 if(NOT "${rc}" STREQUAL "${RC}")
   message(FATAL_ERROR "expected exit code ${RC}, got ${rc}\n--- output ---\n${all}")
 endif()
