@@ -30,12 +30,16 @@ function(soma_package_dependency target)
   set_property(GLOBAL PROPERTY SOMA_DEP_${id}_KNOWN TRUE)
 endfunction()
 soma_package_dependency(Eigen3::Eigen FIND "find_dependency(Eigen3 3.4 NO_MODULE)" PC eigen3)
-soma_package_dependency(PkgConfig::MPFR PC mpfr
-  FIND "find_dependency(PkgConfig)\nif(NOT TARGET PkgConfig::MPFR)\n  pkg_check_modules(MPFR REQUIRED QUIET IMPORTED_TARGET mpfr)\nendif()")
-soma_package_dependency(PkgConfig::GMP PC gmp
-  FIND "find_dependency(PkgConfig)\nif(NOT TARGET PkgConfig::GMP)\n  pkg_check_modules(GMP REQUIRED QUIET IMPORTED_TARGET gmp)\nendif()")
-soma_package_dependency(PkgConfig::OSMESA PC osmesa
-  FIND "find_dependency(PkgConfig)\nif(NOT TARGET PkgConfig::OSMESA)\n  pkg_check_modules(OSMESA REQUIRED QUIET IMPORTED_TARGET osmesa)\nendif()")
+# A pkg-config module found as the imported target PkgConfig::<PREFIX> (cmake/SomaDependencies.cmake).
+function(soma_package_pkg_dependency prefix module)
+  soma_package_dependency(PkgConfig::${prefix} PC ${module} FIND "find_dependency(PkgConfig)
+if(NOT TARGET PkgConfig::${prefix})
+  pkg_check_modules(${prefix} REQUIRED QUIET IMPORTED_TARGET ${module})
+endif()")
+endfunction()
+soma_package_pkg_dependency(MPFR mpfr)
+soma_package_pkg_dependency(GMP gmp)
+soma_package_pkg_dependency(OSMESA osmesa)
 soma_package_dependency(PNG::PNG FIND "find_dependency(PNG)" PC libpng)
 soma_package_dependency(Freetype::Freetype FIND "find_dependency(Freetype)" PC freetype2)
 soma_package_dependency(Ceres::ceres FIND "find_dependency(Ceres)" LIBS -lceres)
