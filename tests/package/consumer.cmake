@@ -10,6 +10,7 @@ function(run what)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "${what} failed (exit ${rc}):\n  ${ARGN}\n${out}")
   endif()
+  string(STRIP "${out}" out)
   set(out "${out}" PARENT_SCOPE)
 endfunction()
 
