@@ -875,7 +875,7 @@ template <class S> StewartForwardSolution<S> solveStewartForward(const StewartPl
   return out;
 }
 
-#define SOMA_STEWART_INSTANTIATE(S)                                                                       \
+#define SOMA_INSTANTIATE_STEWART(S)                                                                       \
   template void validateStewartPlatform<S>(const StewartPlatform<S>&);                                    \
   template std::array<S, 6> stewartLegLengths<S>(const StewartPlatform<S>&, const SE3<S>&);               \
   template S stewartScale<S>(const StewartPlatform<S>&);                                                  \
