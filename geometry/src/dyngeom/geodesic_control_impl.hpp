@@ -93,7 +93,7 @@ std::vector<ClosedLoopSample<S>> simulateGeodesicControl(const SerialDynamics<S>
   return out;
 }
 
-#define SOMA_GEODESIC_CONTROL_INST(S)                                                                         \
+#define SOMA_INSTANTIATE_GEODESIC_CONTROL(S)                                                                         \
   template DgVector<S> geodesicControlTorque<S>(const SerialDynamics<S>&, const JointSpaceGeometry<S>&,       \
                                                 const GeodesicController<S>&, const DgVector<S>&,             \
                                                 const DgVector<S>&, const S&);                                \

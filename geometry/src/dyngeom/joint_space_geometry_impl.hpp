@@ -197,6 +197,6 @@ std::vector<std::vector<Vec6<S>>> JointSpaceGeometry<S>::maurerCartanDifferentia
   return d;
 }
 
-#define SOMA_JOINT_SPACE_GEOMETRY_INST(S) template class JointSpaceGeometry<S>;
+#define SOMA_INSTANTIATE_JOINT_SPACE_GEOMETRY(S) template class JointSpaceGeometry<S>;
 
 }  // namespace soma

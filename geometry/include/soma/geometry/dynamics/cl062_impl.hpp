@@ -186,7 +186,7 @@ CliffordAcceleration<S> rigidBodyAcceleration(const Quadvector<S>& N, const Bive
   return {sdot, res};
 }
 
-#define SOMA_CL062_INSTANTIATE(S)                                                             \
+#define SOMA_INSTANTIATE_CL062(S) namespace cl062 {                                           \
   template Bivector<S> screwElement<S>(const SE3Tangent<S>&);                                 \
   template SE3Tangent<S> screwOf<S>(const Bivector<S>&);                                      \
   template Bivector<S> coScrewElement<S>(const Vec6<S>&);                                     \
@@ -210,6 +210,6 @@ CliffordAcceleration<S> rigidBodyAcceleration(const Quadvector<S>& N, const Bive
   template Hexavector<S> eFormRight<S>(const Bivector<S>&);                                   \
   template CliffordAcceleration<S> rigidBodyAcceleration<S>(const Quadvector<S>&,             \
                                                             const Bivector<S>&,               \
-                                                            const Bivector<S>&);
+                                                            const Bivector<S>&); }
 
 }  // namespace soma::cl062

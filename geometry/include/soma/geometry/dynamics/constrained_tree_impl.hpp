@@ -237,3 +237,9 @@ ConstrainedState<S> ConstrainedTree<S>::rk4Step(const ConstrainedState<S>& y, co
 }
 
 }  // namespace soma
+
+// Explicit instantiation for one scalar (the rule: cmake/SomaInstantiate.cmake).
+#define SOMA_INSTANTIATE_CONSTRAINED_TREE(S)                                        \
+  template class ConstrainedTree<S>;                                                \
+  template DynVector<S> minimumNormSolve<S>(const DynMatrix<S>&, const DynVector<S>&, int*); \
+  template DynMatrix<S> nullSpace<S>(const DynMatrix<S>&);

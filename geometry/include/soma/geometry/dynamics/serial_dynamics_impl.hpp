@@ -503,3 +503,6 @@ void SerialDynamics<S>::hamiltonField(const DynVector<S>& theta, const DynVector
 }
 
 }  // namespace soma
+
+// Explicit instantiation for one scalar (the rule: cmake/SomaInstantiate.cmake).
+#define SOMA_INSTANTIATE_SERIAL_DYNAMICS(S) template class SerialDynamics<S>;

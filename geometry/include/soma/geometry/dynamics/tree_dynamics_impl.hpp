@@ -243,3 +243,9 @@ Vec6<S> TreeDynamics<S>::totalWrench(const DynVector<S>& theta, const DynVector<
 }
 
 }  // namespace soma
+
+// Explicit instantiation for one scalar (the rule: cmake/SomaInstantiate.cmake).
+#define SOMA_INSTANTIATE_TREE_DYNAMICS(S)                                                        \
+  template class TreeDynamics<S>;                                                                \
+  template Eigen::Matrix<S, 3, 3> planarInertia<S>(const S&, const S&, const S&, const S&);     \
+  template Mat6<S> planarBodyInertia<S>(const S&, const S&, const S&, const S&);

@@ -924,7 +924,7 @@ General6RSolution<S> solveGeneral6R(const Robot6R<S>& robot, const Mat4<S>& targ
 
 }  // namespace soma
 
-#define SOMA_GENERAL6R_INSTANTIATE(S)                                                          \
+#define SOMA_INSTANTIATE_GENERAL_6R(S)                                                          \
   template SE3<S> general6rForward<S>(const Robot6R<S>&, const std::array<S, 6>&);             \
   template S general6rResidual<S>(const Robot6R<S>&, const SE3<S>&, const std::array<S, 6>&);  \
   template General6RSolution<S> solveGeneral6R<S>(const Robot6R<S>&, const SE3<S>&,            \
