@@ -50,11 +50,10 @@ set(SOMA_SCALAR_TYPE_float128 "__float128")
 set(SOMA_SCALAR_TYPE_mpfr "mpfr::mpreal")
 
 # Optimisation of each scalar's instantiations in Release. Only double is benchmarked and runs the
-# heavy sweeps; the other four are for accuracy, so they compile at SOMA_LADDER_OPT (-O1), which
-# roughly halves their compile time (measured: see the commit that introduced it) while their
-# studies run about as fast as at -O3 (their time goes to MPFR and libquadmath calls, not to
-# inlined arithmetic). scripts/bench.sh configures -DSOMA_LADDER_OPT=-O3, so the benchmark table
-# compares the scalars at one level.
+# long sweeps; the other four are for accuracy, so they compile at SOMA_LADDER_OPT (-O1): 10-20 %
+# less compile CPU per TU (clang 14; the numbers are in the commit that introduced it).
+# scripts/bench.sh configures -DSOMA_LADDER_OPT=-O3, so the benchmark table compares the scalars
+# at one level.
 set(SOMA_LADDER_OPT "-O1" CACHE STRING
     "Optimisation flag of the float, long double, __float128 and mpfr instantiations in Release")
 foreach(scalar IN LISTS SOMA_SCALARS)

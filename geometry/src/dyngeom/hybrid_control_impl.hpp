@@ -1,5 +1,5 @@
 #pragma once
-// GF §15.4: coordinate-free hybrid force/position control. Definitions; instantiated one scalar per TU in hybrid_control_<scalar>.cpp (compile time).
+// GF §15.4: coordinate-free hybrid force/position control. Definitions; instantiated one scalar per TU by soma_instantiate (cmake/SomaInstantiate.cmake).
 #include "soma/geometry/dyngeom/hybrid_control.hpp"
 
 #include "soma/algebra/errors.hpp"

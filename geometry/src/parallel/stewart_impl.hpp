@@ -1,5 +1,5 @@
 #pragma once
-// Template bodies of parallel/stewart.hpp, instantiated once per scalar in stewart_<scalar>.cpp.
+// Template bodies of parallel/stewart.hpp, instantiated once per scalar by soma_instantiate (cmake/SomaInstantiate.cmake).
 #include "soma/geometry/parallel/stewart.hpp"
 
 #include "soma/algebra/errors.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // SB's Cl(0,6,2) rigid-body dynamics: the definitions behind cl062.hpp. Included only by the
-// per-scalar instantiation TUs geometry/src/dynamics/cl062_<scalar>.cpp (compile time: one scalar
-// per TU) and by cl062.cpp (the scalar-independent shuffleByDefinition).
+// per-scalar instantiation TUs (soma_instantiate, cmake/SomaInstantiate.cmake) and by cl062.cpp
+// (the scalar-independent shuffleByDefinition).
 #include "soma/geometry/dynamics/cl062.hpp"
 
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// Definitions for constrained_tree.hpp (included only by geometry/src/dynamics/constrained_tree_*.cpp).
+// Definitions for constrained_tree.hpp (included only by its instantiations, soma_instantiate (cmake/SomaInstantiate.cmake)).
 #include "soma/algebra/small_linalg.hpp"
 #include "soma/geometry/dynamics/constrained_tree.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// Definitions for tree_dynamics.hpp (included only by geometry/src/dynamics/tree_dynamics_*.cpp).
+// Definitions for tree_dynamics.hpp (included only by its instantiations, soma_instantiate (cmake/SomaInstantiate.cmake)).
 #include "soma/geometry/dynamics/tree_dynamics.hpp"
 
 #include <Eigen/Cholesky>

@@ -1,6 +1,6 @@
 #pragma once
 // Template bodies of the general-6R solver (general_6r.hpp). Included only by the
-// instantiating TUs geometry/src/serial/general_6r*.cpp.
+// instantiating TUs (soma_instantiate, cmake/SomaInstantiate.cmake) and general_6r_{ceres,nlopt}.cpp.
 #include "soma/geometry/serial/general_6r.hpp"
 
 #include <Eigen/Dense>
