@@ -51,7 +51,7 @@ set(SOMA_SCALAR_TYPE_mpfr "mpfr::mpreal")
 
 # Optimisation of each scalar's instantiations in Release. Only double is benchmarked and runs the
 # long sweeps; the other four are for accuracy, so they compile at SOMA_LADDER_OPT (-O1): 10-20 %
-# less compile CPU per TU (clang 14; the numbers are in the commit that introduced it).
+# less compile CPU per TU (clang 14; the numbers: git log of this file).
 # scripts/bench.sh configures -DSOMA_LADDER_OPT=-O3, so the benchmark table compares the scalars
 # at one level.
 set(SOMA_LADDER_OPT "-O1" CACHE STRING
