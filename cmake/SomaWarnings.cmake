@@ -8,7 +8,8 @@ target_compile_options(soma_warnings INTERFACE -Wall -Wextra -Wno-psabi)
 # measured in seconds (`soma_run_code`, -O1): the algebra and dynamics test executables (4.6x and
 # 9x slower at -O0) and the study files listed in studies/CMakeLists.txt (speed/accuracy sweeps,
 # OMPL maps, float128 Lagrangians: the report took 199 s at -O0 against 73 s at -O1).
-# The libraries and benchmarks keep -O3.
+# The libraries and benchmarks keep -O3, except the float, long double, __float128 and mpfr
+# instantiations of the libraries: -O1 (SOMA_LADDER_OPT, cmake/SomaInstantiate.cmake).
 set(SOMA_CHECK_CODE_OPT "-O0" CACHE STRING "Optimisation flag of the tests and studies in Release")
 set(SOMA_RUN_CODE_OPT "-O1" CACHE STRING "Optimisation flag of the tests and studies whose run time matters")
 add_library(soma_check_code INTERFACE)

@@ -31,7 +31,7 @@ done
 load1() { cut -d' ' -f1 /proc/loadavg; }
 loadavg() { cut -d' ' -f1-3 /proc/loadavg | sed 's/ /, /g'; }
 
-cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSOMA_BUILD_BENCH=ON >/dev/null
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSOMA_BUILD_BENCH=ON -DSOMA_LADDER_OPT=-O3 >/dev/null
 targets=()
 for src in bench/*.cpp; do targets+=("bench_$(basename "$src" .cpp)"); done
 cmake --build "$build" --target "${targets[@]}" -j "$jobs"

@@ -10,15 +10,6 @@
 
 namespace soma {
 
-template <class S> S cuspClusterParameter(const Arm3RFrame<S>& f) {
-  const S a1 = f.a1 / f.scale;
-  return std::min<S>(f.s1 * f.s1, S(4) * a1 * a1);
-}
-
-template <class S> bool cuspsIllConditioned(const Arm3RFrame<S>& f) {
-  return !f.decoupled && cuspClusterParameter(f) <= Tolerance<S>::sqrtEpsilon();
-}
-
 namespace {
 
 /// The analysis in S of the double robot, brought back to double.
@@ -113,11 +104,5 @@ std::vector<Vec2<double>> cuspLimitA1Zero(const SerialRobot<double>& robot) {
   });
   return out;
 }
-
-#define SOMA_CUSPS_ADAPTIVE_INSTANTIATE(S)                                                     \
-  template S cuspClusterParameter<S>(const Arm3RFrame<S>&);                                   \
-  template bool cuspsIllConditioned<S>(const Arm3RFrame<S>&);
-SOMA_FOR_EACH_SCALAR(SOMA_CUSPS_ADAPTIVE_INSTANTIATE)
-#undef SOMA_CUSPS_ADAPTIVE_INSTANTIATE
 
 }  // namespace soma

@@ -1,5 +1,5 @@
 // SB's Cl(0,6,2) rigid-body dynamics: the scalar-independent part (SB §4's literal shuffle).
-// The templates are instantiated one scalar per TU in cl062_<scalar>.cpp (see cl062_impl.hpp).
+// The templates are instantiated one scalar per TU by soma_instantiate (cmake/SomaInstantiate.cmake) from cl062_impl.hpp.
 #include "soma/geometry/dynamics/cl062.hpp"
 
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// GF §15.3: geodesic, velocity-tracking and accelerating control laws, and their closed loop. Definitions; instantiated one scalar per TU in geodesic_control_<scalar>.cpp (compile time).
+// GF §15.3: geodesic, velocity-tracking and accelerating control laws, and their closed loop. Definitions; instantiated one scalar per TU by soma_instantiate (cmake/SomaInstantiate.cmake).
 #include "soma/geometry/dyngeom/geodesic_control.hpp"
 
 #include "soma/algebra/errors.hpp"
@@ -93,7 +93,7 @@ std::vector<ClosedLoopSample<S>> simulateGeodesicControl(const SerialDynamics<S>
   return out;
 }
 
-#define SOMA_GEODESIC_CONTROL_INST(S)                                                                         \
+#define SOMA_INSTANTIATE_GEODESIC_CONTROL(S)                                                                         \
   template DgVector<S> geodesicControlTorque<S>(const SerialDynamics<S>&, const JointSpaceGeometry<S>&,       \
                                                 const GeodesicController<S>&, const DgVector<S>&,             \
                                                 const DgVector<S>&, const S&);                                \

@@ -1,5 +1,5 @@
 #pragma once
-// GF §15.4: coordinate-free hybrid force/position control. Definitions; instantiated one scalar per TU in hybrid_control_<scalar>.cpp (compile time).
+// GF §15.4: coordinate-free hybrid force/position control. Definitions; instantiated one scalar per TU by soma_instantiate (cmake/SomaInstantiate.cmake).
 #include "soma/geometry/dyngeom/hybrid_control.hpp"
 
 #include "soma/algebra/errors.hpp"
@@ -117,7 +117,7 @@ template <class S> DgVector<S> forceControlTorque(const HybridProjectors<S>& p, 
   return DgVector<S>(J.transpose() * (p.X * (p.Y * Wd)));
 }
 
-#define SOMA_HYBRID_CONTROL_INST(S)                                                                             \
+#define SOMA_INSTANTIATE_HYBRID_CONTROL(S)                                                                             \
   template HybridProjectors<S> dualBasisProjectors<S>(const DgMatrix<S>&, const DgMatrix<S>&);                 \
   template HybridProjectors<S> transformedProjectors<S>(const HybridProjectors<S>&, const Mat6<S>&);            \
   template HybridProjectors<S> n6Projectors<S>(const DgMatrix<S>&, const Mat6<S>&);                           \

@@ -1,5 +1,5 @@
 #pragma once
-// GF §15.1 (lines 9529–9621): the bi-invariant geometry of SE(3) pulled back to joint space. Definitions; instantiated one scalar per TU in joint_space_geometry_<scalar>.cpp (compile time).
+// GF §15.1 (lines 9529–9621): the bi-invariant geometry of SE(3) pulled back to joint space. Definitions; instantiated one scalar per TU by soma_instantiate (cmake/SomaInstantiate.cmake).
 #include "soma/geometry/dyngeom/joint_space_geometry.hpp"
 
 #include "soma/algebra/errors.hpp"
@@ -197,6 +197,6 @@ std::vector<std::vector<Vec6<S>>> JointSpaceGeometry<S>::maurerCartanDifferentia
   return d;
 }
 
-#define SOMA_JOINT_SPACE_GEOMETRY_INST(S) template class JointSpaceGeometry<S>;
+#define SOMA_INSTANTIATE_JOINT_SPACE_GEOMETRY(S) template class JointSpaceGeometry<S>;
 
 }  // namespace soma

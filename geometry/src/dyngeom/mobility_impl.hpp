@@ -1,5 +1,5 @@
 #pragma once
-// GF §15.2: mobility of single-loop mechanisms. Definitions; instantiated one scalar per TU in mobility_<scalar>.cpp (compile time).
+// GF §15.2: mobility of single-loop mechanisms. Definitions; instantiated one scalar per TU by soma_instantiate (cmake/SomaInstantiate.cmake).
 #include "soma/geometry/dyngeom/mobility.hpp"
 
 #include "soma/algebra/errors.hpp"
@@ -34,16 +34,6 @@ template <class S> void checkScrews(const std::vector<Vec6<S>>& s, const char* f
     if (!allFinite(s[i])) throw InvalidInput(std::string(fn) + ": screw " + std::to_string(i + 1) + " has a NaN or infinite entry");
 }
 }  // namespace
-
-#ifdef SOMA_DYNGEOM_MOBILITY_NONTEMPLATES  // defined once, in mobility_double.cpp
-// GF §15.2 line 9645 (Hunt p. 33 for the multi-loop form)
-int kutzbachGrubler(int links, int joints, int sumJointFreedoms, int d) {
-  if (links < 1 || joints < 0 || sumJointFreedoms < 0)
-    throw InvalidInput("kutzbachGrubler: links must be >= 1 and joints, freedoms >= 0");
-  if (d != 3 && d != 6) throw InvalidInput("kutzbachGrubler: d must be 3 (planar/spherical) or 6 (spatial), got " + std::to_string(d));
-  return d * (links - joints - 1) + sumJointFreedoms;
-}
-#endif
 
 template <class S> int screwSystemDimension(const std::vector<Vec6<S>>& screws) {
   checkScrews(screws, "screwSystemDimension");
@@ -194,7 +184,7 @@ template <class S> LoopTrace<S> traceLoop(const std::vector<Vec6<S>>& screws, co
   return out;
 }
 
-#define SOMA_MOBILITY_INST(S)                                                                      \
+#define SOMA_INSTANTIATE_MOBILITY(S)                                                                      \
   template int screwSystemDimension<S>(const std::vector<Vec6<S>>&);                              \
   template int infinitesimalMobility<S>(const std::vector<Vec6<S>>&);                             \
   template ScrewMatrix<S> completionAlgebra<S>(const std::vector<Vec6<S>>&);                      \

@@ -1,4 +1,5 @@
-// Grassmannian index sets and explicit instantiations (DESIGN §2). GF §6.8
+// Grassmannian index sets (not a template; the templates of grassmannian.hpp are instantiated per
+// scalar from grassmannian_impl.hpp). GF §6.8
 #include "soma/geometry/lines/grassmannian.hpp"
 
 namespace soma {
@@ -19,9 +20,4 @@ std::vector<std::vector<int>> pluckerIndexSets(int n, int m) {
   return out;
 }
 
-#define SOMA_GRASS_INSTANTIATE(S)                                                                       \
-  template Eigen::Matrix<S, Eigen::Dynamic, 1> pluckerEmbedding<S>(const Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>&); \
-  template Eigen::Matrix<S, Eigen::Dynamic, 1> pluckerRelationsG2<S>(const Eigen::Matrix<S, Eigen::Dynamic, 1>&, int);
-SOMA_FOR_EACH_SCALAR(SOMA_GRASS_INSTANTIATE)
-#undef SOMA_GRASS_INSTANTIATE
 }  // namespace soma

@@ -1,5 +1,5 @@
 #pragma once
-// Template bodies of parallel/stewart.hpp, instantiated once per scalar in stewart_<scalar>.cpp.
+// Template bodies of parallel/stewart.hpp, instantiated once per scalar by soma_instantiate (cmake/SomaInstantiate.cmake).
 #include "soma/geometry/parallel/stewart.hpp"
 
 #include "soma/algebra/errors.hpp"
@@ -875,7 +875,7 @@ template <class S> StewartForwardSolution<S> solveStewartForward(const StewartPl
   return out;
 }
 
-#define SOMA_STEWART_INSTANTIATE(S)                                                                       \
+#define SOMA_INSTANTIATE_STEWART(S)                                                                       \
   template void validateStewartPlatform<S>(const StewartPlatform<S>&);                                    \
   template std::array<S, 6> stewartLegLengths<S>(const StewartPlatform<S>&, const SE3<S>&);               \
   template S stewartScale<S>(const StewartPlatform<S>&);                                                  \

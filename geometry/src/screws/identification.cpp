@@ -1,6 +1,5 @@
-// Gibson–Hunt type names and the explicit instantiations of the identification for float,
-// double, long double (__float128 and mpreal in identification_ext.cpp).
-#define SOMA_SCREW_IDENTIFICATION_IMPL
+// Gibson–Hunt type names (not templates; the identification itself is instantiated per scalar from
+// identification_impl.hpp by soma_instantiate).
 #include "soma/geometry/screws/identification.hpp"
 
 namespace soma {
@@ -60,14 +59,5 @@ int screwSystemTypeParameterCount(ScrewSystemType t) {
     default: return 0;
   }
 }
-
-#define SOMA_SCREW_ID_INSTANTIATE(S)                                                              \
-  template ScrewBasis<S> screwSystemNormalForm<S>(ScrewSystemType, const std::array<S, 3>&);      \
-  template ScrewSystemIdentification<S> identifyScrewSystem<S>(const ScrewSystem<S>&);            \
-  template struct ScrewSystemIdentification<S>;
-SOMA_SCREW_ID_INSTANTIATE(float)
-SOMA_SCREW_ID_INSTANTIATE(double)
-SOMA_SCREW_ID_INSTANTIATE(long double)
-#undef SOMA_SCREW_ID_INSTANTIATE
 
 }  // namespace soma

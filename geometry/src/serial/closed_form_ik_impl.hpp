@@ -1,6 +1,6 @@
 #pragma once
 // Closed-form inverse kinematics: 3R wrists (GF §5.1), 3R arms (GF §5.2), Pieper robots (GF §10.3).
-// Private implementation header: closed_form_ik_<scalar>.cpp instantiate it once per scalar (one TU
+// Private implementation header: soma_instantiate (cmake/SomaInstantiate.cmake) instantiates it once per scalar (one TU
 // each, so the five build in parallel; together they took ~3 min of CPU as one TU).
 #include "soma/geometry/serial/closed_form_ik.hpp"
 
@@ -855,7 +855,7 @@ Solution<S> solveClosedForm(const SerialRobot<S>& robot, const SE3<S>& target, I
                      "consecutive axes meeting or parallel)");
 }
 
-#define SOMA_CFIK_INSTANTIATE(S)                                                               \
+#define SOMA_INSTANTIATE_CLOSED_FORM_IK(S)                                                               \
   template TrigRoots<S> solveLinearTrig<S>(const S&, const S&, const S&);                     \
   template WristAngles<S> wrist3R<S>(const Vec3<S>&, const Vec3<S>&, const Vec3<S>&,           \
                                      const Mat3<S>&);                                          \

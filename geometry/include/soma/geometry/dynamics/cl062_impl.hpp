@@ -1,7 +1,7 @@
 #pragma once
 // SB's Cl(0,6,2) rigid-body dynamics: the definitions behind cl062.hpp. Included only by the
-// per-scalar instantiation TUs geometry/src/dynamics/cl062_<scalar>.cpp (compile time: one scalar
-// per TU) and by cl062.cpp (the scalar-independent shuffleByDefinition).
+// per-scalar instantiation TUs (soma_instantiate, cmake/SomaInstantiate.cmake) and by cl062.cpp
+// (the scalar-independent shuffleByDefinition).
 #include "soma/geometry/dynamics/cl062.hpp"
 
 #include <vector>
@@ -186,7 +186,7 @@ CliffordAcceleration<S> rigidBodyAcceleration(const Quadvector<S>& N, const Bive
   return {sdot, res};
 }
 
-#define SOMA_CL062_INSTANTIATE(S)                                                             \
+#define SOMA_INSTANTIATE_CL062(S) namespace cl062 {                                           \
   template Bivector<S> screwElement<S>(const SE3Tangent<S>&);                                 \
   template SE3Tangent<S> screwOf<S>(const Bivector<S>&);                                      \
   template Bivector<S> coScrewElement<S>(const Vec6<S>&);                                     \
@@ -210,6 +210,6 @@ CliffordAcceleration<S> rigidBodyAcceleration(const Quadvector<S>& N, const Bive
   template Hexavector<S> eFormRight<S>(const Bivector<S>&);                                   \
   template CliffordAcceleration<S> rigidBodyAcceleration<S>(const Quadvector<S>&,             \
                                                             const Bivector<S>&,               \
-                                                            const Bivector<S>&);
+                                                            const Bivector<S>&); }
 
 }  // namespace soma::cl062

@@ -1,5 +1,5 @@
 #pragma once
-// Definitions for constrained_tree.hpp (included only by geometry/src/dynamics/constrained_tree_*.cpp).
+// Definitions for constrained_tree.hpp (included only by its instantiations, soma_instantiate (cmake/SomaInstantiate.cmake)).
 #include "soma/algebra/small_linalg.hpp"
 #include "soma/geometry/dynamics/constrained_tree.hpp"
 
@@ -237,3 +237,9 @@ ConstrainedState<S> ConstrainedTree<S>::rk4Step(const ConstrainedState<S>& y, co
 }
 
 }  // namespace soma
+
+// Explicit instantiation for one scalar (the rule: cmake/SomaInstantiate.cmake).
+#define SOMA_INSTANTIATE_CONSTRAINED_TREE(S)                                        \
+  template class ConstrainedTree<S>;                                                \
+  template DynVector<S> minimumNormSolve<S>(const DynMatrix<S>&, const DynVector<S>&, int*); \
+  template DynMatrix<S> nullSpace<S>(const DynMatrix<S>&);

@@ -1,6 +1,6 @@
 #pragma once
-// Definitions of SerialDynamics (serial_dynamics.hpp); included only by
-// geometry/src/dynamics/serial_dynamics.cpp, which instantiates the five scalars.
+// Definitions of SerialDynamics (serial_dynamics.hpp); included only by its per-scalar
+// instantiations (soma_instantiate, cmake/SomaInstantiate.cmake).
 #include "soma/geometry/dynamics/serial_dynamics.hpp"
 
 #include <Eigen/Cholesky>
@@ -503,3 +503,6 @@ void SerialDynamics<S>::hamiltonField(const DynVector<S>& theta, const DynVector
 }
 
 }  // namespace soma
+
+// Explicit instantiation for one scalar (the rule: cmake/SomaInstantiate.cmake).
+#define SOMA_INSTANTIATE_SERIAL_DYNAMICS(S) template class SerialDynamics<S>;

@@ -1,5 +1,5 @@
 #pragma once
-// Definitions for tree_dynamics.hpp (included only by geometry/src/dynamics/tree_dynamics_*.cpp).
+// Definitions for tree_dynamics.hpp (included only by its instantiations, soma_instantiate (cmake/SomaInstantiate.cmake)).
 #include "soma/geometry/dynamics/tree_dynamics.hpp"
 
 #include <Eigen/Cholesky>
@@ -243,3 +243,9 @@ Vec6<S> TreeDynamics<S>::totalWrench(const DynVector<S>& theta, const DynVector<
 }
 
 }  // namespace soma
+
+// Explicit instantiation for one scalar (the rule: cmake/SomaInstantiate.cmake).
+#define SOMA_INSTANTIATE_TREE_DYNAMICS(S)                                                        \
+  template class TreeDynamics<S>;                                                                \
+  template Eigen::Matrix<S, 3, 3> planarInertia<S>(const S&, const S&, const S&, const S&);     \
+  template Mat6<S> planarBodyInertia<S>(const S&, const S&, const S&, const S&);

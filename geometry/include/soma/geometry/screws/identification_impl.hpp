@@ -1,5 +1,5 @@
 #pragma once
-// Definitions of identification.hpp; included only by geometry/src/screws/identification.cpp.
+// Definitions of identification.hpp; included only by the explicit instantiations (soma_instantiate).
 #include "soma/geometry/screws/identification.hpp"
 
 #include "soma/algebra/small_linalg.hpp"
@@ -421,3 +421,9 @@ template <class S> ScrewSystemIdentification<S> identifyScrewSystem(const ScrewS
 }
 
 }  // namespace soma
+
+// Explicit instantiation for one scalar (the rule: cmake/SomaInstantiate.cmake).
+#define SOMA_INSTANTIATE_IDENTIFICATION(S)                                                        \
+  template ScrewBasis<S> screwSystemNormalForm<S>(ScrewSystemType, const std::array<S, 3>&);      \
+  template ScrewSystemIdentification<S> identifyScrewSystem<S>(const ScrewSystem<S>&);            \
+  template struct ScrewSystemIdentification<S>;

@@ -1,6 +1,6 @@
 #pragma once
-// Definitions of screw_system.hpp; included only by geometry/src/screws/screw_system.cpp (the
-// explicit instantiations), so users pay no decomposition instantiations.
+// Definitions of screw_system.hpp; included only by the explicit instantiations (soma_instantiate,
+// cmake/SomaInstantiate.cmake), so users pay no decomposition instantiations.
 #include "soma/geometry/screws/screw_system.hpp"
 #include "soma/algebra/small_linalg.hpp"
 
@@ -183,3 +183,13 @@ template <class S> Eigen::Matrix<S, Eigen::Dynamic, 1> wedge(const ScrewMatX<S>&
 }
 
 }  // namespace soma
+
+// Explicit instantiation for one scalar (the rule: cmake/SomaInstantiate.cmake).
+#define SOMA_INSTANTIATE_SCREW_SYSTEM(S)                                                  \
+  template class ScrewSystem<S>;                                                          \
+  template ScrewSystem<S> unionOf<S>(const ScrewSystem<S>&, const ScrewSystem<S>&);       \
+  template ScrewSystem<S> intersectionOf<S>(const ScrewSystem<S>&, const ScrewSystem<S>&); \
+  template ScrewSystem<S> isotropyAlgebra<S>(const ScrewSystem<S>&);                      \
+  template ScrewSystem<S> completion<S>(const ScrewSystem<S>&, std::vector<int>*);        \
+  template Eigen::Matrix<S, Eigen::Dynamic, 1> wedge<S>(const ScrewMatX<S>&);             \
+  template ScrewBasis<S> orthogonalComplement<S>(const ScrewBasis<S>&);

@@ -1,6 +1,6 @@
 #pragma once
 // Template bodies of the general-6R solver (general_6r.hpp). Included only by the
-// instantiating TUs geometry/src/serial/general_6r*.cpp.
+// instantiating TUs (soma_instantiate, cmake/SomaInstantiate.cmake) and general_6r_{ceres,nlopt}.cpp.
 #include "soma/geometry/serial/general_6r.hpp"
 
 #include <Eigen/Dense>
@@ -924,7 +924,7 @@ General6RSolution<S> solveGeneral6R(const Robot6R<S>& robot, const Mat4<S>& targ
 
 }  // namespace soma
 
-#define SOMA_GENERAL6R_INSTANTIATE(S)                                                          \
+#define SOMA_INSTANTIATE_GENERAL_6R(S)                                                          \
   template SE3<S> general6rForward<S>(const Robot6R<S>&, const std::array<S, 6>&);             \
   template S general6rResidual<S>(const Robot6R<S>&, const SE3<S>&, const std::array<S, 6>&);  \
   template General6RSolution<S> solveGeneral6R<S>(const Robot6R<S>&, const SE3<S>&,            \

@@ -1,6 +1,0 @@
-// Explicit instantiation of SB's Cl(0,6,2) dynamics for float (one scalar per TU: compile time).
-#include "soma/geometry/dynamics/cl062_impl.hpp"
-
-namespace soma::cl062 {
-SOMA_CL062_INSTANTIATE(float)
-}  // namespace soma::cl062

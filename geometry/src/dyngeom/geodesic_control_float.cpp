@@ -1,6 +1,0 @@
-// Explicit instantiation of geodesic_control (GF ch. 15) for float (one scalar per TU: compile time).
-#include "geodesic_control_impl.hpp"
-
-namespace soma {
-SOMA_GEODESIC_CONTROL_INST(float)
-}  // namespace soma

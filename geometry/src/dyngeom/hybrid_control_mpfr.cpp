@@ -1,6 +1,0 @@
-// Explicit instantiation of hybrid_control (GF ch. 15) for mpfr::mpreal (one scalar per TU: compile time).
-#include "hybrid_control_impl.hpp"
-
-namespace soma {
-SOMA_HYBRID_CONTROL_INST(mpfr::mpreal)
-}  // namespace soma

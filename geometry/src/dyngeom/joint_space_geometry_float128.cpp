@@ -1,6 +1,0 @@
-// Explicit instantiation of joint_space_geometry (GF ch. 15) for __float128 (one scalar per TU: compile time).
-#include "joint_space_geometry_impl.hpp"
-
-namespace soma {
-SOMA_JOINT_SPACE_GEOMETRY_INST(__float128)
-}  // namespace soma

@@ -1,7 +1,0 @@
-// Explicit instantiation of the general-6R solver for float (GF §11.5). One TU per scalar:
-// the eigen solvers are the heaviest templates of soma/geometry.
-#include "soma/geometry/serial/general_6r_impl.hpp"
-
-namespace soma {
-SOMA_GENERAL6R_INSTANTIATE(float)
-}  // namespace soma
