@@ -45,7 +45,7 @@ template <class S> void adjointSO3(Context& c) {
   }
   c.checkEqual("SO3::fromMatrix(1.1 R) throws InvalidInput", "throws", threw ? "throws" : "accepted");
 }
-GF04_STUDY("GF-4.2-adjoint-SO3", "Adjoint representation of SO(3): R Ω Rᵀ = hat(R ω)", "GF §4.2",
+SOMA_STUDY_SCALAR("GF-4.2-adjoint-SO3", "Adjoint representation of SO(3): R Ω Rᵀ = hat(R ω)", "GF §4.2",
            adjointSO3);
 
 // ---- GF §4.2, GF-4.2-adjoint-SE3 ----------------------------------------------------------
@@ -92,7 +92,7 @@ template <class S> void adjointSE3(Context& c) {
                   maxAbs(Vec6<S>(far.adjoint() * s.coeffs() - SE3Tangent<S>::vee(conj).coeffs())),
                   tol * big);
 }
-GF04_STUDY("GF-4.2-adjoint-SE3", "Adjoint representation of SE(3): [[R, 0], [TR, R]], product, inverse",
+SOMA_STUDY_SCALAR("GF-4.2-adjoint-SE3", "Adjoint representation of SE(3): [[R, 0], [TR, R]], product, inverse",
            "GF §4.2", adjointSE3);
 
 }  // namespace

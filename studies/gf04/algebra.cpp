@@ -55,7 +55,7 @@ template <class S> void tangentAlgebras(Context& c) {
   c.checkResidual("book's su(2) element: M† + M = 0 (anti-Hermitian)", antiHerm, S(0));
   c.checkResidual("book's su(2) element: Tr M = 0", abs(im.trace()) + abs(re.trace()), S(0));
   const S herm = maxOf(maxAbs(Mat2<S>(re.transpose() - re)), maxAbs(Mat2<S>(im.transpose() + im)));
-  recordFails(c, "\"the Lie algebra of the unitary groups consists of Hermitian matrices\": M† − M = 0",
+  c.checkPrintedFails("\"the Lie algebra of the unitary groups consists of Hermitian matrices\": M† − M = 0",
               "E4.1", herm, Tolerance<S>::identity());
   // exp(M) (power series of the real 4×4 form [[Re, −Im], [Im, Re]]) lies in SU(2).
   Mat4<S> big;
@@ -91,7 +91,7 @@ template <class S> void tangentAlgebras(Context& c) {
                         abs(hi.trace())),
                   Tolerance<S>::identity(16));
 }
-GF04_STUDY("GF-4.1-tangent-algebras",
+SOMA_STUDY_SCALAR("GF-4.1-tangent-algebras",
            "so(n), u(n), su(n) as tangent spaces: dimensions, su(2) is anti-Hermitian (E4.1)",
            "GF §4.1", tangentAlgebras);
 
@@ -133,7 +133,7 @@ template <class S> void se3TwistVelocity(Context& c) {
   c.checkResidual("|u| = 1e6: ω × p + v vs Ω(p − u) + hω (error ≤ 64 eps |u|: cancellation)",
                   maxAbs(Vec3<S>(direct - stable)), Tolerance<S>::identity(64) * big);
 }
-GF04_STUDY("GF-4.1-se3-twist-velocity",
+SOMA_STUDY_SCALAR("GF-4.1-se3-twist-velocity",
            "Point velocity under a screw motion: ṗ = ω × p + v with moment v = u × ω + h ω",
            "GF §4.1", se3TwistVelocity);
 
@@ -168,13 +168,13 @@ template <class S> void hatMap(Context& c) {
     worstVee = maxOf(worstVee, maxAbs(Vec3<S>(SO3Tangent<S>::vee(W).coeffs() - w)));
   }
   c.checkResidual("Ω x = ω × x (100 random pairs)", worst, Tolerance<S>::identity(8));
-  recordFails(c, "(Ω)_ij = E_ijk ω_k", "E4.2", worstEps, Tolerance<S>::identity(8));
+  c.checkPrintedFails("(Ω)_ij = E_ijk ω_k", "E4.2", worstEps, Tolerance<S>::identity(8));
   c.checkResidual("corrected (Ω)_ij = −E_ijk ω_k (100 random ω)", worstFixed, S(0));
   c.checkResidual("vee(hat(ω)) = ω", worstVee, S(0));
   const Vec3<S> w = randomVec<S, 3>(g);
   c.checkResidual("Ω = ad(ω) (so(3) adjoint)", maxAbs(Mat3<S>(SO3Tangent<S>(w).ad() - skew(w))), S(0));
 }
-GF04_STUDY("GF-4.1-hat-map", "The hat map ω ↦ Ω, Ωx = ω × x; the ε-tensor formula's sign (E4.2)",
+SOMA_STUDY_SCALAR("GF-4.1-hat-map", "The hat map ω ↦ Ω, Ωx = ω × x; the ε-tensor formula's sign (E4.2)",
            "GF §4.1", hatMap);
 
 }  // namespace

@@ -264,25 +264,4 @@ template <class S> SE3Tangent<S> randomTwistWithAngle(std::mt19937_64& g, const 
   return SE3Tangent<S>(Vec3<S>(a * theta), v);
 }
 
-/// The printed formula of an erratum, shown failing: passes when its residual exceeds `tol`
-/// (the tolerance the corrected formula meets), recorded as expected "fails (erratum E4.x)".
-template <class S>
-bool recordFails(Context& c, const std::string& name, const std::string& erratum,
-                 const S& residual, const S& tol) {
-  return c.record(name + " [as printed]", "fails (erratum " + erratum + ")",
-                  "residual " + toString(residual, 6), toDouble(residual), toDouble(tol),
-                  isFinite(residual) && residual > tol);
-}
-
 }  // namespace soma::studies::gf04
-
-/// Register a scalar-generic chapter-4 study whose body is the function template FN<S>(Context&).
-#define GF04_STUDY(ID, TITLE, SOURCE, FN)                                                  \
-  SOMA_STUDY({.id = ID,                                                                    \
-              .title = TITLE,                                                              \
-              .source = SOURCE,                                                            \
-              .chapter = ::soma::studies::gf04::kChapter,                                  \
-              .scalarGeneric = true,                                                       \
-              .run = [](::soma::studies::Context& c) {                                     \
-                ::soma::withScalar(c.scalar(), [&]<class S>() { FN<S>(c); });              \
-              }})

@@ -92,7 +92,7 @@ template <class S> void bracketStructureConstants(Context& c) {
   c.checkResidual("C^k_ji = −C^k_ij (so(3), se(3), se(2))",
                   maxOf(so3.second, maxOf(se3.second, se2.second)), S(0));
 }
-GF04_STUDY("GF-4.3-bracket-structure-constants",
+SOMA_STUDY_SCALAR("GF-4.3-bracket-structure-constants",
            "Lie bracket XY − YX: bilinear, antisymmetric, Jacobi; ad from structure constants",
            "GF §4.3", bracketStructureConstants);
 
@@ -144,7 +144,7 @@ template <class S> void so3Su2Commutators(Context& c) {
   const S pauli = maxOf((sx - ih * p3).maxAbs(), maxOf((sy - ih * p2).maxAbs(), (sz - ih * p1).maxAbs()));
   c.checkResidual("σx, σy, σz = (i/2)·(Pauli σ₃, σ₂, σ₁) (not the Pauli matrices themselves)", pauli, S(0));
 }
-GF04_STUDY("GF-4.3-so3-su2-commutators", "Commutators of so(3) and su(2); ad(X) = X, ad(σx) = X",
+SOMA_STUDY_SCALAR("GF-4.3-so3-su2-commutators", "Commutators of so(3) and su(2); ad(X) = X, ad(σx) = X",
            "GF §4.3", so3Su2Commutators);
 
 // ---- GF §4.3, GF-4.3-so4-commutators (erratum E4.3) ---------------------------------------
@@ -191,7 +191,7 @@ template <class S> void so4Commutators(Context& c) {
     }
   }
 }
-GF04_STUDY("GF-4.3-so4-commutators", "so(4) commutation relations; the basis convention (E4.3)",
+SOMA_STUDY_SCALAR("GF-4.3-so4-commutators", "so(4) commutation relations; the basis convention (E4.3)",
            "GF §4.3", so4Commutators);
 
 // ---- GF §4.3, GF-4.3-se3-commutators-ad --------------------------------------------------
@@ -247,7 +247,7 @@ template <class S> void se3CommutatorsAd(Context& c) {
                   Tolerance<S>::identity(64) * S(1000000));
   c.checkResidual("pure translation: ad(0; v)² = 0 (nilpotent)", nil, S(0));
 }
-GF04_STUDY("GF-4.3-se3-commutators-ad",
+SOMA_STUDY_SCALAR("GF-4.3-se3-commutators-ad",
            "se(3) commutator table (restored from OCR loss) and ad(s) = [[Ω, 0], [V, Ω]]", "GF §4.3",
            se3CommutatorsAd);
 

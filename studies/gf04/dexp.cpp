@@ -81,10 +81,10 @@ template <class S> void dexpHausdorff(Context& c) {
   const S remainder = ipow(a, 4) / S(120) * exp(a) * maxAbs(xd);
   c.checkResidual("correct 4-term truncation ẋ + [X,ẋ]/2! + [X,[X,ẋ]]/3! + [X,[X,[X,ẋ]]]/4! (≤ ‖ad‖⁴e^‖ad‖/5! |ẋ|)",
                   errCorrect, remainder);
-  recordFails(c, "4th term (1/4!)[X,[X,Ẋ]]: truncation error within the same bound", "E4.9", errPrinted, remainder);
+  c.checkPrintedFails("4th term (1/4!)[X,[X,Ẋ]]: truncation error within the same bound", "E4.9", errPrinted, remainder);
   c.note("4-term truncation errors at |X| ≈ 0.3: correct " + str(errCorrect) + ", printed " + str(errPrinted) + ".");
 }
-GF04_STUDY("GF-4.5.2-dexp-hausdorff",
+SOMA_STUDY_SCALAR("GF-4.5.2-dexp-hausdorff",
            "Hausdorff formula (d/dt e^X)e^{−X} = Σ ad^k/(k+1)! ẋ, spatial and body; 4th term (E4.9)",
            "GF §4.5.2", dexpHausdorff);
 

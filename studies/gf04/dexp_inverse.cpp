@@ -57,7 +57,7 @@ template <class S> void so3DexpInverse(Context& c) {
   c.checkResidual("θ = 2π − 1e-3: ljacinv · ljac = I (error ≤ 64 eps/(2π − θ))", maxAbs(Mat3<S>(rb.ljacinv() * rb.ljac() - I)),
                   tol * S(1000));
 }
-GF04_STUDY("GF-4.5.3-so3-dexp-and-inverse", "Angular velocity: closed-form SO(3) dexp and its inverse (idempotents)",
+SOMA_STUDY_SCALAR("GF-4.5.3-so3-dexp-and-inverse", "Angular velocity: closed-form SO(3) dexp and its inverse (idempotents)",
            "GF §4.5.3", so3DexpInverse);
 
 // ---- GF §4.5.4, GF-4.5.4-se3-dexp-and-inverse --------------------------------------------------
@@ -117,7 +117,7 @@ template <class S> void se3DexpInverse(Context& c) {
   c.note("θ = 2π − 1e-3: det dexp = " + str(xb.ljac().determinant()) + " (the square of the SO(3) value 2(1 − cos θ)/θ² = " +
          str(S(2) * (S(1) - cos(near2pi)) / (near2pi * near2pi)) + "): dexp is not invertible at 2π.");
 }
-GF04_STUDY("GF-4.5.4-se3-dexp-and-inverse", "Velocity screw: closed-form SE(3) dexp (quartic in Z) and its inverse",
+SOMA_STUDY_SCALAR("GF-4.5.4-se3-dexp-and-inverse", "Velocity screw: closed-form SE(3) dexp (quartic in Z) and its inverse",
            "GF §4.5.4", se3DexpInverse);
 
 }  // namespace

@@ -47,7 +47,7 @@ template <class S> void expBasics(Context& c) {
   const S comm = sqrt((Xr * Yr - Yr * Xr).squaredNorm());
   c.checkNear("… while |[X, Y]|_F = 4π² sin 120° · √2", S(4) * pi<S>() * pi<S>() * sqrt(S(3)) / S(2) * sqrt(S(2)),
               comm, Tolerance<S>::identity(256) * S(64));
-  recordFails(c, "\"e^X e^Y = e^{X+Y} only if [X, Y] = 0\": |[X, Y]| should be 0", "E4.4", comm,
+  c.checkPrintedFails("\"e^X e^Y = e^{X+Y} only if [X, Y] = 0\": |[X, Y]| should be 0", "E4.4", comm,
               Tolerance<S>::identity());
   // Mercator series log g = Σ (−1)^{k+1}(g − I)^k/k near I; diverges beyond 60°.
   auto mercator = [&](const Mat3<S>& gm, int maxTerms, S* lastTerm, S* term20, S* term40) {
@@ -77,7 +77,7 @@ template <class S> void expBasics(Context& c) {
                t40 > t20 ? "diverges" : "converges");
   c.note("Mercator terms at 100°: |term₂₀| = " + str(t20) + ", |term₄₀| = " + str(t40) + ".");
 }
-GF04_STUDY("GF-4.4-exp-basics",
+SOMA_STUDY_SCALAR("GF-4.4-exp-basics",
            "Matrix exponential: det e^X = e^{Tr X}, one-parameter subgroups, Mercator log, E4.4",
            "GF §4.4", expBasics);
 
@@ -124,7 +124,7 @@ template <class S> void su2ExpLog(Context& c) {
   c.checkEqual("U = −I (t = π): t csc t U − t cot t I (the book: \"fails when t = ±π\")", "fails",
                fails ? "fails" : "recovers U");
 }
-GF04_STUDY("GF-4.4-su2-exp-log", "su(2): M² = −t² I, e^M = cos t I + sin t/t M, log U", "GF §4.4",
+SOMA_STUDY_SCALAR("GF-4.4-su2-exp-log", "su(2): M² = −t² I, e^M = cos t I + sin t/t M, log U", "GF §4.4",
            su2ExpLog);
 
 // ---- GF §4.4.1, GF-4.4.1-so3-idempotents ----------------------------------------------------
@@ -179,7 +179,7 @@ template <class S> void so3Idempotents(Context& c) {
                     (sinP - CM::real(sinSeries)).maxAbs() / th, Tolerance<S>::identity(64));
   }
 }
-GF04_STUDY("GF-4.4.1-so3-idempotents",
+SOMA_STUDY_SCALAR("GF-4.4.1-so3-idempotents",
            "so(3) idempotents P₀, P±: annihilating, idempotent, Ωⁿ and e^Ω by spectral calculus",
            "GF §4.4.1", so3Idempotents);
 

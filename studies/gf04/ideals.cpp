@@ -53,7 +53,7 @@ template <class S> void soupPlate(Context& c) {
            " of " + std::to_string(n) + " samples to keep the lift continuous.");
   }
 }
-GF04_STUDY("GF-4.6-soup-plate-double-cover",
+SOMA_STUDY_SCALAR("GF-4.6-soup-plate-double-cover",
            "SU(2) double covers SO(3): the 2π loop lifts to a path I → −I, the 4π loop closes",
            "GF §4.6", soupPlate);
 
@@ -91,7 +91,7 @@ template <class S> void quaternionLieAlgebra(Context& c) {
   }
   c.checkResidual("φ([p, q]) = [φ(p), φ(q)] for φ: i ↦ 2σx, j ↦ 2σy, k ↦ 2σz (50 random pairs)", iso, tol);
 }
-GF04_STUDY("GF-4.6-quaternion-lie-algebra",
+SOMA_STUDY_SCALAR("GF-4.6-quaternion-lie-algebra",
            "Lie algebra of unit quaternions = pure quaternions, isomorphic to su(2)", "GF §4.6",
            quaternionLieAlgebra);
 
@@ -124,7 +124,7 @@ template <class S> void idealsSemisimplicity(Context& c) {
               killingForm<SO3Tangent<S>>().determinant(), S(0));
   c.checkNear("se(3) not semisimple: det of its Killing form = 0", S(0), killingForm<SE3Tangent<S>>().determinant(), S(0));
 }
-GF04_STUDY("GF-4.6-ideals-semisimplicity",
+SOMA_STUDY_SCALAR("GF-4.6-ideals-semisimplicity",
            "Ideals ↔ normal subgroups; translations are an abelian ideal of se(3); so(3) semisimple",
            "GF §4.6", idealsSemisimplicity);
 

@@ -26,10 +26,10 @@ template <class S> void killingSo3(Context& c) {
   Mat3<S> A, B, C;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) A(i, j) = uniform<S>(g), B(i, j) = uniform<S>(g), C(i, j) = uniform<S>(g);
-  recordFails(c, "Tr(A + BC) = Tr(AC + BC)", "E4.11", abs(Mat3<S>(A + B * C).trace() - Mat3<S>(A * C + B * C).trace()), tol);
+  c.checkPrintedFails("Tr(A + BC) = Tr(AC + BC)", "E4.11", abs(Mat3<S>(A + B * C).trace() - Mat3<S>(A * C + B * C).trace()), tol);
   c.checkResidual("corrected Tr((A + B)C) = Tr(AC) + Tr(BC)", abs(Mat3<S>((A + B) * C).trace() - (A * C).trace() - (B * C).trace()), tol);
 }
-GF04_STUDY("GF-4.7-killing-so3", "Killing form of so(3): ⟨x, y⟩ = Tr(ad x ad y) = −2 x·y", "GF §4.7", killingSo3);
+SOMA_STUDY_SCALAR("GF-4.7-killing-so3", "Killing form of so(3): ⟨x, y⟩ = Tr(ad x ad y) = −2 x·y", "GF §4.7", killingSo3);
 
 // ---- GF §4.7, GF-4.7-killing-se3 (erratum E4.10) -------------------------------------------------
 template <class S> void killingSe3(Context& c) {
@@ -39,7 +39,7 @@ template <class S> void killingSe3(Context& c) {
   Mat6<S> correct = Mat6<S>::Zero(), printed = Mat6<S>::Zero();
   correct.template topLeftCorner<3, 3>() = -S(4) * Mat3<S>::Identity();
   printed.template topLeftCorner<3, 3>() = -S(2) * Mat3<S>::Identity();
-  recordFails(c, "Killing matrix of se(3) = diag(−2I₃, 0)", "E4.10", maxAbs(Mat6<S>(K - printed)), S(0));
+  c.checkPrintedFails("Killing matrix of se(3) = diag(−2I₃, 0)", "E4.10", maxAbs(Mat6<S>(K - printed)), S(0));
   c.checkResidual("corrected: Killing matrix of se(3) = diag(−4I₃, 0) (exact)", maxAbs(Mat6<S>(K - correct)), S(0));
   S form(0), invariance(0), transl(0);
   for (int n = 0; n < 50; ++n) {
@@ -58,7 +58,7 @@ template <class S> void killingSe3(Context& c) {
   lu.setThreshold(Tolerance<S>::rank());
   c.checkEqual("rank of the se(3) Killing form", 3, int(lu.rank()));
 }
-GF04_STUDY("GF-4.7-killing-se3", "Killing form of se(3): −4 ω₁·ω₂, degenerate (printed −2, E4.10)", "GF §4.7",
+SOMA_STUDY_SCALAR("GF-4.7-killing-se3", "Killing form of se(3): −4 ω₁·ω₂, degenerate (printed −2, E4.10)", "GF §4.7",
            killingSe3);
 
 // ---- GF §4.8, GF-4.8-cbh-series ---------------------------------------------------------------------
@@ -93,7 +93,7 @@ template <class S> void cbhSeries(Context& c) {
   c.note("so(3), |X| = |Y| = log(2)/2: 3rd-order error " + str(bchError(xb, yb, 3, 0)) + ", 4th-order error " +
          str(bchError(xb, yb, 4, 0)) + ".");
 }
-GF04_STUDY("GF-4.8-cbh-series", "Campbell–Baker–Hausdorff series log(e^X e^Y) to third order; error order",
+SOMA_STUDY_SCALAR("GF-4.8-cbh-series", "Campbell–Baker–Hausdorff series log(e^X e^Y) to third order; error order",
            "GF §4.8", cbhSeries);
 
 // ---- GF §4.8, GF-4.8-so3-closed-form-bch ------------------------------------------------------------
@@ -156,7 +156,7 @@ template <class S> void so3ClosedFormBch(Context& c) {
   c.checkEqual("composite identity (θ₂ = −θ₁, same axis): sin φ/2 = 0, a, b, c undefined", "non-finite",
                isFinite(ki[1]) ? "finite" : "non-finite");
 }
-GF04_STUDY("GF-4.8-so3-closed-form-bch",
+SOMA_STUDY_SCALAR("GF-4.8-so3-closed-form-bch",
            "Closed-form so(3) composition e^{θ₁x₁}e^{θ₂x₂} = e^{φ(a x₁ + b x₂ + c x₁ × x₂)} via su(2)",
            "GF §4.8", so3ClosedFormBch);
 

@@ -97,7 +97,7 @@ template <class S> void productOfExponentials(Context& c) {
   c.checkResidual("prismatic joint 2 with travel 1000: e^{θ(0; d)} = translation θd (error ≤ 64 eps · 1000)",
                   maxAbs(Mat4<S>(poe(sp, tp).matrix() - expect.matrix())), tol * S(1000));
 }
-GF04_STUDY("GF-4.5.1-product-of-exponentials",
+SOMA_STUDY_SCALAR("GF-4.5.1-product-of-exponentials",
            "Product of exponentials K(θ) = Π e^{θ_i s_i}; ∂K/∂θ_i = S_i; point velocity with current screws",
            "GF §4.5.1", productOfExponentials);
 
@@ -176,7 +176,7 @@ template <class S> void jacobianScrewDerivatives(Context& c) {
   c.checkEqual("… and θ₅ = 0.5 leaves the singularity", "non-singular",
                abs(jacobian(sw, tw).determinant()) / ipow(scale, 6) > S(1) / S(100000) ? "non-singular" : "singular");
 }
-GF04_STUDY("GF-4.5.1-jacobian-and-screw-derivatives",
+SOMA_STUDY_SCALAR("GF-4.5.1-jacobian-and-screw-derivatives",
            "Robot Jacobian = current joint screws; ∂s_j/∂θ_i = [s_i, s_j]; det J independent of θ₁, θ₆",
            "GF §4.5.1", jacobianScrewDerivatives);
 

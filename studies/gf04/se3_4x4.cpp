@@ -80,7 +80,7 @@ template <class S> void se3Exp4x4(Context& c) {
     if (c.makeFigures()) helixFigure(c);
   }
 }
-GF04_STUDY("GF-4.4.2-se3-exp-4x4",
+SOMA_STUDY_SCALAR("GF-4.4.2-se3-exp-4x4",
            "SE(3) exp in the 4×4 representation: S⁴ + θ²S² = 0, idempotents, nilpotent, closed form",
            "GF §4.4.2", se3Exp4x4);
 
@@ -133,7 +133,7 @@ template <class S> void se3Log4x4(Context& c) {
       k * ((th * cos(S(2) * th) - sin(th)) * Mat4<S>::Identity() - (th * cos(th) + S(2) * th * cos(S(2) * th) - sin(th)) * G -
            sin(S(2) * th) * G + (S(2) * th * cos(th) + th * cos(S(2) * th) - sin(th) - sin(S(2) * th)) * G2 -
            (th * cos(th) - sin(th)) * G2 * G);
-  recordFails(c, "assembled log(G) display read literally (OCR-garbled)", "E4.6", maxAbs(Mat4<S>(garbled - s.hat())), tol * S(4));
+  c.checkPrintedFails("assembled log(G) display read literally (OCR-garbled)", "E4.6", maxAbs(Mat4<S>(garbled - s.hat())), tol * S(4));
   // Accuracy of the polynomial form over θ: cancellation ~ eps/θ² near 0, eps/(π − θ) near π.
   const Vec3<S> a = randomUnit<S>(g), v = randomVec<S, 3>(g);
   for (const S& theta : {S(1) / S(100000), S(1) / S(1000), S(1) / S(10), S(1), S(3), pi<S>() - S(1) / S(1000)}) {
@@ -155,7 +155,7 @@ template <class S> void se3Log4x4(Context& c) {
     if (c.makeFigures()) interpolationFigure(c);
   }
 }
-GF04_STUDY("GF-4.4.2-se3-log-4x4",
+SOMA_STUDY_SCALAR("GF-4.4.2-se3-log-4x4",
            "SE(3) log in the 4×4 representation by Hermite interpolation; assembled display garbled (E4.6)",
            "GF §4.4.2", se3Log4x4);
 

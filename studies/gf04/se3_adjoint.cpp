@@ -30,7 +30,7 @@ template <class S> void adjointExp(Context& c) {
   const S tol = Tolerance<S>::identity(64);
   c.checkResidual("Z⁵ + 2θ²Z³ + θ⁴Z = 0 (θ = 1.2)", maxAbs(Mat6<S>(Z * Z * Z * Z * Z + S(2) * t2 * Z * Z * Z + t2 * t2 * Z)), tol * S(4));
   const Mat3<S> W = skew(s.ang()), V = skew(s.lin()), W2 = W * W;
-  recordFails(c, "Ω²VΩ² + θ²(ΩV + VΩ) = −θ⁴V", "E4.7", maxAbs(Mat3<S>(W2 * V * W2 + t2 * (W * V + V * W) + t2 * t2 * V)), tol * S(4));
+  c.checkPrintedFails("Ω²VΩ² + θ²(ΩV + VΩ) = −θ⁴V", "E4.7", maxAbs(Mat3<S>(W2 * V * W2 + t2 * (W * V + V * W) + t2 * t2 * V)), tol * S(4));
   S corr(0);
   for (int n = 0; n < 20; ++n) {
     const Vec3<S> w = randomVec<S, 3>(g);
@@ -80,7 +80,7 @@ template <class S> void adjointExp(Context& c) {
   c.checkResidual("pure translation: Z² = 0 and e^Z = I + Z = Ad(e^s)",
                   maxOf(maxAbs(Mat6<S>(tr.ad() * tr.ad())), maxAbs(Mat6<S>(I + tr.ad() - tr.exp().adjoint()))), S(0));
 }
-GF04_STUDY("GF-4.4.3-adjoint-exp",
+SOMA_STUDY_SCALAR("GF-4.4.3-adjoint-exp",
            "SE(3) exp in the 6×6 adjoint representation: quintic, P/N calculus, closed form; E4.7",
            "GF §4.4.3", adjointExp);
 
@@ -116,7 +116,7 @@ template <class S> void adjointLog(Context& c) {
     const Mat6<S> H = s.exp().adjoint(), Z = s.ad();
     const std::string at = " (random twist, θ = " + str(th) + ")";
     c.checkNear("Tr H = 2 + 4 cos θ" + at, S(2) + S(4) * cos(th), H.trace(), tol);
-    recordFails(c, "log H with prefactor 1/(8 sin³θ): log H = Z" + at, "E4.8", maxAbs(Mat6<S>(adjointLogBook(H, 8) - Z)), tol * S(16));
+    c.checkPrintedFails("log H with prefactor 1/(8 sin³θ): log H = Z" + at, "E4.8", maxAbs(Mat6<S>(adjointLogBook(H, 8) - Z)), tol * S(16));
     c.checkResidual("corrected prefactor 1/(4 sin³θ): log H = Z" + at, maxAbs(Mat6<S>(adjointLogBook(H, 4) - Z)), tol * S(16));
     c.checkNear("printed log H = ½ Z exactly (ratio of max entries)" + at, S(1) / S(2),
                 maxAbs(adjointLogBook(H, 8)) / maxAbs(Z), tol * S(16));
@@ -158,7 +158,7 @@ template <class S> void adjointLog(Context& c) {
                     err, bound);
   }
 }
-GF04_STUDY("GF-4.4.3-adjoint-log",
+SOMA_STUDY_SCALAR("GF-4.4.3-adjoint-log",
            "SE(3) log in the adjoint representation by Hermite interpolation; prefactor halved (E4.8)",
            "GF §4.4.3", adjointLog);
 

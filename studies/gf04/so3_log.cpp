@@ -43,7 +43,7 @@ template <class S> void rodrigues(Context& c) {
   c.note("(1 − cos θ)/θ² evaluated directly at θ = 1e-8 has relative error " + str(abs(direct / taylor - S(1))) +
          " (the Ω² term is O(θ²), so R is still accurate to eps; the coefficient is not).");
 }
-GF04_STUDY("GF-4.4.1-rodrigues", "Rodrigues formula e^Ω = I + sin θ/θ Ω + (1 − cos θ)/θ² Ω²",
+SOMA_STUDY_SCALAR("GF-4.4.1-rodrigues", "Rodrigues formula e^Ω = I + sin θ/θ Ω + (1 − cos θ)/θ² Ω²",
            "GF §4.4.1", rodrigues);
 
 // ---- GF §4.4.1, GF-4.4.1-so3-log-trace -----------------------------------------------------
@@ -95,7 +95,7 @@ template <class S> void so3LogTrace(Context& c) {
   c.note("At θ = π the printed formula's error is " + str(bookErr) +
          " (R − Rᵀ and sin θ are both round-off; the book: \"the method fails when θ = ±π\").");
 }
-GF04_STUDY("GF-4.4.1-so3-log-trace", "so(3) log from the trace: Tr R = 1 + 2cos θ, log R = θ/(2 sin θ)(R − Rᵀ)",
+SOMA_STUDY_SCALAR("GF-4.4.1-so3-log-trace", "so(3) log from the trace: Tr R = 1 + 2cos θ, log R = θ/(2 sin θ)(R − Rᵀ)",
            "GF §4.4.1", so3LogTrace);
 
 // ---- GF §4.4.1, GF-4.4.1-so3-log-polynomial (erratum E4.5) ---------------------------------
@@ -127,7 +127,7 @@ template <class S> void so3LogPolynomial(Context& c) {
   };
   const S corr = maxOf((p(x1, false) - y1).abs(), maxOf((p(x2, false) - y2).abs(), (p(x3, false) - y3).abs()));
   c.checkResidual("corrected Lagrange p(x_k) = y_k (θ = 1.1)", corr, Tolerance<S>::identity(16));
-  recordFails(c, "Lagrange third denominator (x₃ − x₁)(x₃ − x₁): p(x₃) = y₃", "E4.5", (p(x3, true) - y3).abs(),
+  c.checkPrintedFails("Lagrange third denominator (x₃ − x₁)(x₃ − x₁): p(x₃) = y₃", "E4.5", (p(x3, true) - y3).abs(),
               Tolerance<S>::identity(16));
   // Monomial coefficients: by solving the Vandermonde system, vs the book's closed forms.
   const auto abc = solveComplex<S>({{C(S(1)), x1, x1 * x1}, {C(S(1)), x2, x2 * x2}, {C(S(1)), x3, x3 * x3}}, {y1, y2, y3});
@@ -148,7 +148,7 @@ template <class S> void so3LogPolynomial(Context& c) {
                     maxAbs(Mat3<S>(so3LogPolynomial(R) - skew(w))), bound);
   }
 }
-GF04_STUDY("GF-4.4.1-so3-log-polynomial", "so(3) log as a Lagrange polynomial in R; Lagrange typo (E4.5)",
+SOMA_STUDY_SCALAR("GF-4.4.1-so3-log-polynomial", "so(3) log as a Lagrange polynomial in R; Lagrange typo (E4.5)",
            "GF §4.4.1", so3LogPolynomial);
 
 }  // namespace

@@ -24,12 +24,6 @@ inline FourBar<double> catalogueBar(const V2& pc = V2::Zero()) { return FourBar<
 inline std::array<double, 5> catalogueLaw() { return {1.0, 1.0, 0.3, -0.2, 0.0}; }
 inline MotionJet<double> catalogueJet() { return catalogueBar().couplerJet(1.0, 1, catalogueLaw()); }
 
-/// A printed formula failing as it should: passes when the residual exceeds tol.
-inline bool recordFails(Context& c, const std::string& name, const std::string& erratum, double residual, double tol) {
-  return c.record(name + " [as printed]", "fails (erratum " + erratum + ")", "residual " + toString(residual, 6), residual, tol,
-                  std::isfinite(residual) && residual > tol);
-}
-
 /// Identity tolerance for double studies: k ulps of unit-scale data.
 inline double tol(double k = 1024) { return k * Tolerance<double>::epsilon(); }
 

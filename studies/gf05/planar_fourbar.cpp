@@ -151,7 +151,7 @@ void poleVelocity(Context& c) {
   c.checkResidual("2ω²ṙ from the rocker side", (r4 - inv.r(1)).norm(), tol(1024));
   const auto q = fixedCentrode(jet);
   const V2 qd(q[0].derivative(1), q[1].derivative(1));
-  recordFails(c, "the formula read as the velocity of the classical centrode (q̇ = 2ṙ)", "E5.9", (r1 - qd).norm(), 1e-6);
+  c.checkPrintedFails("the formula read as the velocity of the classical centrode (q̇ = 2ṙ)", "E5.9", (r1 - qd).norm(), 1e-6);
 }
 
 // GF §5.4, GF-5.4-fourbar-angular-acceleration (E5.17)
@@ -173,7 +173,7 @@ void angularAcceleration(Context& c) {
   // E5.17: dotting with E₂(c4 − c2) does not eliminate ω̇₄; E₂(c3 − c4) does
   const V2 r4 = p.c3 - fb.c4();
   c.checkResidual("(c3 − c4)·E₂(c3 − c4) = 0: E₂(c3 − c4) eliminates ω̇₄", std::abs(r4.dot(E2(r4))), tol(4));
-  recordFails(c, "\"scalar product with E₂(c4 − c2)\" eliminates ω̇₄: (c3 − c4)·E₂(c4 − c2) should be 0", "E5.17",
+  c.checkPrintedFails("\"scalar product with E₂(c4 − c2)\" eliminates ω̇₄: (c3 − c4)·E₂(c4 − c2) should be 0", "E5.17",
               std::abs(r4.dot(E2(V2(fb.c4() - p.c2)))), 1e-6);
 }
 

@@ -42,12 +42,6 @@ inline V6 six(const V3& a, const V3& b) {
 inline double tolId(int ulps = 64) { return Tolerance<double>::identity(ulps); }
 inline std::string num(double x) { return toString(x, 6); }
 
-/// Record that a printed formula fails, as the erratum says it should (error = its residual).
-inline void recordFails(Context& c, const std::string& what, const std::string& erratum, double residual, double threshold) {
-  c.record(what + " — printed form fails (" + erratum + ")", "fails (residual > " + num(threshold) + ")", num(residual),
-           residual, threshold, residual > threshold);
-}
-
 /// The figure of GF-6.6-linear-complex (gf06/figures.cpp): complex lines through a few points.
 void complexFigure(Context& c);
 

@@ -69,7 +69,7 @@ void complex4x4(Context& c) {
   c.checkResidual("yᵀX x = b·ω + α·v with p_ij = x_i y_j − x_j y_i (100 random)", ident, tolId(256));
   c.checkResidual("det X = (α·b)²", det, tolId(256));
   c.checkResidual("corrected C₁ = −b₁y₀ + α₃y₂ − α₂y₃, C₃ = −b₃y₀ + α₂y₁ − α₁y₂: points of the null plane give complex lines", correctedC, tolId(256));
-  recordFails(c, "printed C₁, C₃ (sign of α₂)", "E6.5/E6.6", printedC, 1e-6);
+  c.checkPrintedFails("printed C₁, C₃ (sign of α₂)", "E6.5/E6.6", printedC, 1e-6);
   c.checkResidual("nullPlane(y) contains y and the complex lines through y", nullPlane, tolId(1024));
   c.checkResidual("null polarity is invertible: nullPoint(nullPlane(y)) = y", polarity, 1e-10);
   const LinearComplex<double> sing = LinearComplex<double>::singular(L::pointDirection(V3::Zero(), V3::UnitX()));
@@ -207,15 +207,12 @@ void grassmannHomogeneous(Context& c) {
   c.checkEqual("Plücker: C(4,2) − 1 − 1 relation = 4", 4, static_cast<long long>(pluckerIndexSets(2, 4).size()) - 1 - 1);
 }
 
-#define GF6(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-GF6("GF-6.6-linear-complex", "Linear line complexes: b·ω + α·v = 0, pitch, singular and infinite-pitch complexes", "GF §6.6", linearComplex);
-GF6("GF-6.6-complex-4x4", "The complex as a 4×4 antisymmetric form and its null polarity (E6.5, E6.6)", "GF §6.6", complex4x4);
-GF6("GF-6.6-complex-symmetries", "Rigid symmetries and axis of a linear complex (E6.1)", "GF §6.6", complexSymmetries);
-GF6("GF-6.7-inverse-jacobian-6R", "Inverse Jacobian of a PUMA-like arm by reciprocal lines", "GF §6.7", inverseJacobian);
-GF6("GF-6.8-grassmannian-embedding", "Plücker embedding of Grassmannians and the Plücker relations", "GF §6.8", grassmannEmbedding);
-GF6("GF-6.8-grassmannian-homogeneous", "Grassmannians as homogeneous spaces: dimension n(m − n) (E6.7)", "GF §6.8", grassmannHomogeneous);
-#undef GF6
+SOMA_STUDY_DOUBLE("GF-6.6-linear-complex", "Linear line complexes: b·ω + α·v = 0, pitch, singular and infinite-pitch complexes", "GF §6.6", linearComplex);
+SOMA_STUDY_DOUBLE("GF-6.6-complex-4x4", "The complex as a 4×4 antisymmetric form and its null polarity (E6.5, E6.6)", "GF §6.6", complex4x4);
+SOMA_STUDY_DOUBLE("GF-6.6-complex-symmetries", "Rigid symmetries and axis of a linear complex (E6.1)", "GF §6.6", complexSymmetries);
+SOMA_STUDY_DOUBLE("GF-6.7-inverse-jacobian-6R", "Inverse Jacobian of a PUMA-like arm by reciprocal lines", "GF §6.7", inverseJacobian);
+SOMA_STUDY_DOUBLE("GF-6.8-grassmannian-embedding", "Plücker embedding of Grassmannians and the Plücker relations", "GF §6.8", grassmannEmbedding);
+SOMA_STUDY_DOUBLE("GF-6.8-grassmannian-homogeneous", "Grassmannians as homogeneous spaces: dimension n(m − n) (E6.7)", "GF §6.8", grassmannHomogeneous);
 
 }  // namespace
 }  // namespace soma::studies::gf06::SOMA_UNITY_ID

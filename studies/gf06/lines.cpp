@@ -161,7 +161,7 @@ void pointsOnLine(Context& c) {
   }
   c.checkResidual("foot ω×v/|ω|² satisfies q × ω = v (convention A)", worst, tolId(64));
   c.checkResidual("join → foot + λω reaches q₁", worstRound, tolId(64));
-  recordFails(c, "printed foot (v × ω)/|ω|² under convention A", "E6.1", bookFoot, 1e-6);
+  c.checkPrintedFails("printed foot (v × ω)/|ω|² under convention A", "E6.1", bookFoot, 1e-6);
 }
 
 // GF §6.3, GF-6.3-klein-2planes (E6.8)
@@ -219,7 +219,7 @@ void adjointOnLines(Context& c) {
   }
   c.checkResidual("Ad(R,t)·line(q, ω) = line(Rq + t, Rω), T x = t × x (100 random)", worst, tolId(256));
   c.checkResidual("ω·v and ω·ω invariant", worstInv, tolId(256));
-  recordFails(c, "with the printed T x = x × t", "E6.1", bookT, 1e-6);
+  c.checkPrintedFails("with the printed T x = x × t", "E6.1", bookT, 1e-6);
   // Extremes: rotation by π, pure translation, |t| = 1e8, a line at infinity.
   const L l = L::pointDirection(V3(1, 2, 3), V3(0, 1, 1));
   const SE3d rpi(SO3d::fromAxisAngle(V3(1, 0, 0), pi<double>()), V3(0, 0, 0));
@@ -330,7 +330,7 @@ void isotropy(Context& c) {
     worstInf = std::max(worstInf, (lineAction(ci) * six(V3::Zero(), v) - six(V3::Zero(), v)).norm());
   }
   c.checkResidual("t = (I − R)r + λω fixes (ω; r×ω + pω) (convention A; 100 random)", worstA, tolId(256));
-  recordFails(c, "printed t = (R − I)r + λω", "E6.1", worstB, 1e-6);
+  c.checkPrintedFails("printed t = (R − I)r + λω", "E6.1", worstB, 1e-6);
   c.checkResidual("(0; v) is fixed by rotations about v and every translation", worstInf, tolId(256));
 }
 
@@ -349,22 +349,19 @@ void directedLines(Context& c) {
   c.checkEqual("normalising a line at infinity throws InvalidInput", 1, threw ? 1 : 0);
 }
 
-#define GF6(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-GF6("GF-6.1-point-line-distance", "Distance from a point to a line: book formula, Plücker form, minimisation", "GF §6.1", pointLineDistance);
-GF6("GF-6.1-meet-condition", "Two lines meet iff ω_a·v_b + v_a·ω_b = 0", "GF §6.1", meetCondition);
-GF6("GF-6.1-same-line", "Same line iff the Plücker vectors are proportional", "GF §6.1", sameLine);
-GF6("GF-6.2-plucker-two-points", "Plücker coordinates of the join of two points (E6.1, E6.2)", "GF §6.2", twoPoints);
-GF6("GF-6.2-klein-quadric", "Lines lie on the Klein quadric; lines at infinity", "GF §6.2", kleinQuadric);
-GF6("GF-6.2-points-on-line", "Points of a line from its Plücker coordinates (E6.1)", "GF §6.2", pointsOnLine);
-GF6("GF-6.3-klein-2planes", "2-planes in the Klein quadric: α-planes (stars) and β-planes (plane fields) (E6.8)", "GF §6.3", klein2Planes);
-GF6("GF-6.4-adjoint-on-lines", "SE(3) acts on lines by the adjoint representation (E6.1)", "GF §6.4", adjointOnLines);
-GF6("GF-6.4-reciprocal-product-example", "Reciprocal product of two lines = −d sin α", "GF §6.4", reciprocalExample);
-GF6("GF-6.4-invariant-bilinear-forms", "The invariant symmetric forms of Ad are spanned by Q₀ and Q∞", "GF §6.4", invariantForms);
-GF6("GF-6.4-pitch-quadrics", "Pitch p = ω·v/ω·ω and the pitch quadrics Q_p", "GF §6.4", pitchQuadrics);
-GF6("GF-6.4-isotropy", "Isotropy groups of screws (E6.1)", "GF §6.4", isotropy);
-GF6("GF-6.4-directed-lines", "Directed lines double-cover lines", "GF §6.4", directedLines);
-#undef GF6
+SOMA_STUDY_DOUBLE("GF-6.1-point-line-distance", "Distance from a point to a line: book formula, Plücker form, minimisation", "GF §6.1", pointLineDistance);
+SOMA_STUDY_DOUBLE("GF-6.1-meet-condition", "Two lines meet iff ω_a·v_b + v_a·ω_b = 0", "GF §6.1", meetCondition);
+SOMA_STUDY_DOUBLE("GF-6.1-same-line", "Same line iff the Plücker vectors are proportional", "GF §6.1", sameLine);
+SOMA_STUDY_DOUBLE("GF-6.2-plucker-two-points", "Plücker coordinates of the join of two points (E6.1, E6.2)", "GF §6.2", twoPoints);
+SOMA_STUDY_DOUBLE("GF-6.2-klein-quadric", "Lines lie on the Klein quadric; lines at infinity", "GF §6.2", kleinQuadric);
+SOMA_STUDY_DOUBLE("GF-6.2-points-on-line", "Points of a line from its Plücker coordinates (E6.1)", "GF §6.2", pointsOnLine);
+SOMA_STUDY_DOUBLE("GF-6.3-klein-2planes", "2-planes in the Klein quadric: α-planes (stars) and β-planes (plane fields) (E6.8)", "GF §6.3", klein2Planes);
+SOMA_STUDY_DOUBLE("GF-6.4-adjoint-on-lines", "SE(3) acts on lines by the adjoint representation (E6.1)", "GF §6.4", adjointOnLines);
+SOMA_STUDY_DOUBLE("GF-6.4-reciprocal-product-example", "Reciprocal product of two lines = −d sin α", "GF §6.4", reciprocalExample);
+SOMA_STUDY_DOUBLE("GF-6.4-invariant-bilinear-forms", "The invariant symmetric forms of Ad are spanned by Q₀ and Q∞", "GF §6.4", invariantForms);
+SOMA_STUDY_DOUBLE("GF-6.4-pitch-quadrics", "Pitch p = ω·v/ω·ω and the pitch quadrics Q_p", "GF §6.4", pitchQuadrics);
+SOMA_STUDY_DOUBLE("GF-6.4-isotropy", "Isotropy groups of screws (E6.1)", "GF §6.4", isotropy);
+SOMA_STUDY_DOUBLE("GF-6.4-directed-lines", "Directed lines double-cover lines", "GF §6.4", directedLines);
 
 }  // namespace
 }  // namespace soma::studies::gf06::SOMA_UNITY_ID

@@ -103,7 +103,7 @@ void cylindroidTwoLines(Context& c) {
   c.checkResidual("pitch of μs₁ + λs₂ = −μλ l sin φ/(μ² + λ² + 2μλ cos φ) (100 random, l = 1, φ = π/3)", worstPitch, tolId(256));
   c.checkResidual("axis height z = +l(λ² + λμ cos φ)/D (corrected sign)", worstZ, tolId(256));
   c.checkResidual("axes on z(x² + y²) = +l(y² + xy cot φ) (corrected cubic)", worstCubic, tolId(1024));
-  recordFails(c, "printed z(x² + y²) = −l(y² + xy cot φ)", "E6.3", printedCubic, 1e-3);
+  c.checkPrintedFails("printed z(x² + y²) = −l(y² + xy cot φ)", "E6.3", printedCubic, 1e-3);
   c.checkResidual("axes on the canonical cubic of Cylindroid (principal frame)", worstOn, tolId(1024));
   c.checkNear("μ = 0 is the second line, at height +l", l, screwAxis(s2).axis.foot().z(), tolId());
   c.checkNear("principal pitch max = l(cos φ + 1)/(2 sin φ)", l * (std::cos(phi) + 1) / (2 * std::sin(phi)), cy.pitchMax(), tolId());
@@ -219,7 +219,7 @@ void curvatureAxes(Context& c) {
   c.checkResidual("axis s(φ) passes through (0, 0, 1/k_φ) (Euler k_φ = k_x cos²φ + k_y sin²φ)", onPoint, tolId(64));
   c.checkResidual("the rational cubic s(λ, μ) is the line s(φ) (convention A)", rational, 0.0);
   c.checkResidual("axes on z(k_x y² + k_y x²) = x² + y²", surface, tolId(256));
-  recordFails(c, "printed moment (i cos φ + j sin φ)/k_φ equals q × ω (it is ω × q: convention B)", "E6.1", printedMoment, 1e-6);
+  c.checkPrintedFails("printed moment (i cos φ + j sin φ)/k_φ equals q × ω (it is ω × q: convention B)", "E6.1", printedMoment, 1e-6);
   c.checkResidual("umbilic k_x = k_y = 2: every axis through (0, 0, ½)",
                   L(curvatureAxis(2.0, 2.0, 0.3, 0.8)).distanceTo(V3(0, 0, 0.5)) + L(curvatureAxis(2.0, 2.0, -0.6, 0.1)).distanceTo(V3(0, 0, 0.5)), tolId(64));
   c.checkEqual("saddle k_x = 1, k_y = −1, asymptotic direction λ = μ: the axis is the line at infinity", 1,
@@ -231,15 +231,12 @@ void curvatureAxes(Context& c) {
   c.checkNear("parabolic point k_x = 0: the axis for φ = 0 is at infinity too", 1.0, L(curvatureAxis(0.0, 1.0, 1.0, 0.0)).isAtInfinity() ? 1.0 : 0.0, 0.0);
 }
 
-#define GF6(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-GF6("GF-6.5.1-regulus", "The two reguli of the hyperboloid x² + y² − z² = 1 in Plücker coordinates", "GF §6.5.1", regulus);
-GF6("GF-6.5.1-conic-to-quadric", "A conic in the Klein quadric fills a quadric det(A + BT) = 0", "GF §6.5.1", conicToQuadric);
-GF6("GF-6.5.2-cylindroid-two-lines", "The cylindroid of two lines: pitch, axes, cubic surface (E6.3)", "GF §6.5.2", cylindroidTwoLines);
-GF6("GF-6.5.2-cylindroid-principal-form", "Cylindroid from two perpendicular lines (E6.4)", "GF §6.5.2", cylindroidPrincipal);
-GF6("GF-6.5.2-fixed-axode", "The fixed axode of a one-parameter motion", "GF §6.5.2", fixedAxode);
-GF6("GF-6.5.3-curvature-axes", "Axes of curvature of a surface point form a cubic ruled surface (E6.1)", "GF §6.5.3", curvatureAxes);
-#undef GF6
+SOMA_STUDY_DOUBLE("GF-6.5.1-regulus", "The two reguli of the hyperboloid x² + y² − z² = 1 in Plücker coordinates", "GF §6.5.1", regulus);
+SOMA_STUDY_DOUBLE("GF-6.5.1-conic-to-quadric", "A conic in the Klein quadric fills a quadric det(A + BT) = 0", "GF §6.5.1", conicToQuadric);
+SOMA_STUDY_DOUBLE("GF-6.5.2-cylindroid-two-lines", "The cylindroid of two lines: pitch, axes, cubic surface (E6.3)", "GF §6.5.2", cylindroidTwoLines);
+SOMA_STUDY_DOUBLE("GF-6.5.2-cylindroid-principal-form", "Cylindroid from two perpendicular lines (E6.4)", "GF §6.5.2", cylindroidPrincipal);
+SOMA_STUDY_DOUBLE("GF-6.5.2-fixed-axode", "The fixed axode of a one-parameter motion", "GF §6.5.2", fixedAxode);
+SOMA_STUDY_DOUBLE("GF-6.5.3-curvature-axes", "Axes of curvature of a surface point form a cubic ruled surface (E6.1)", "GF §6.5.3", curvatureAxes);
 
 }  // namespace
 }  // namespace soma::studies::gf06::SOMA_UNITY_ID

@@ -54,11 +54,6 @@ MX cols(std::initializer_list<V6> c) {
 }
 double maxAbs(const MX& m) { return m.size() ? m.cwiseAbs().maxCoeff() : 0.0; }
 const double kTol = Tolerance<double>::identity(64);
-bool recordFails(Context& c, const std::string& name, const std::string& erratum, double residual,
-                 double tol) {
-  return c.record(name + " [as printed]", "fails (erratum " + erratum + ")",
-                  "residual " + toString(residual, 6), residual, tol, std::isfinite(residual) && residual > tol);
-}
 MX gram(const MX& s, const M6& q) { return s.transpose() * q * s; }
 /// The n-th compound (∧ⁿ) of a 6×6 matrix: minors in the lexicographic order of wedge().
 MX compound(const M6& a, int n) {
@@ -297,7 +292,7 @@ void reduction2(Context& c) {
   const double printed = m11 * m21 * q11 + (m11 * m22 + m12 * m22) * q12 + m12 * m22 * q22;
   const double fixed = m11 * m21 * q11 + (m11 * m22 + m12 * m21) * q12 + m12 * m22 * q22;
   c.checkNear("off-diagonal of MQ'Mᵀ with (m11 m22 + m12 m21) q'12", exact, fixed, kTol);
-  recordFails(c, "off-diagonal with (m11 m22 + m12 m22) q'12", "E8.2", abs(printed - exact), kTol);
+  c.checkPrintedFails("off-diagonal with (m11 m22 + m12 m22) q'12", "E8.2", abs(printed - exact), kTol);
 }
 
 // GF §8.2 IA cylindroid: real lines, angle and distance; pitch and axis position along the cylindroid.
@@ -396,14 +391,14 @@ void reguli(Context& c) {
     const Vec3d w(c1, c2, 0), v(qa * c1 + c3, qa * c2, qb * c3), q = w.cross(v) / w.squaredNorm();
     printedWorst = abs(qb * q.z() * q.z() + q.x() * q.z() + qa * q.y() + qa * qa * qb);
   }
-  recordFails(c, "IB₀ paraboloid p_b z² + xz + p_a y + p_a² p_b = 0", "E8.7", printedWorst, kTol * 16);
+  c.checkPrintedFails("IB₀ paraboloid p_b z² + xz + p_a y + p_a² p_b = 0", "E8.7", printedWorst, kTol * 16);
   // IB₃ plane pair: lines of (i, p_a i), (j, p_b j), (0, k) with p_a p_b < 0 sit at z = ±√(−p_a p_b).
   const double ra = 0.5, rb = -0.18;
   const double c1 = sqrt(-rb), c2 = sqrt(ra);  // ra c1² + rb c2² = 0
   const Vec3d w(c1, c2, 0), v(ra * c1, rb * c2, 0);
   const Vec3d q = w.cross(v) / w.squaredNorm();
   c.checkResidual("IB₃ (0.5, −0.18) line lies in z² + p_a p_b = 0", abs(q.z() * q.z() + ra * rb), kTol);
-  recordFails(c, "IB₃ planes z² − p_a p_b = 0", "E8.8", abs(q.z() * q.z() - ra * rb), kTol);
+  c.checkPrintedFails("IB₃ planes z² − p_a p_b = 0", "E8.8", abs(q.z() * q.z() - ra * rb), kTol);
   if (c.makeFigures()) {
     namespace rd = soma::render;
     rd::Scene scene;
@@ -489,7 +484,7 @@ void pitch15(Context& c) {
   const double fixed = -double(W.transpose() * q0s * W) / double(W.transpose() * qis * W);
   const double printed = double(W.transpose() * q0s * W) / double(W.transpose() * q0s * W);
   c.checkNear("p = −𝒲ᵀQ₀*𝒲 / 𝒲ᵀQ∞*𝒲", p, fixed, kTol * 16);
-  recordFails(c, "p = 𝒲ᵀQ₀*𝒲 / 𝒲ᵀQ₀*𝒲 (= 1 always)", "E8.4", abs(printed - p), kTol * 16);
+  c.checkPrintedFails("p = 𝒲ᵀQ₀*𝒲 / 𝒲ᵀQ₀*𝒲 (= 1 always)", "E8.4", abs(printed - p), kTol * 16);
   const auto id = identifyScrewSystem(ScrewSystem<double>(five));
   c.checkNear("identifyScrewSystem on the 5-system: pitch of the reciprocal screw", p, id.parameters[0], kTol * 16);
   // Extreme: 5-system containing all translations → reciprocal pure translation, denominator 0.
@@ -548,7 +543,7 @@ void table83(Context& c) {
   const double i5n = i5(n0), i5t = i5(MX(shift.adjoint() * n0));
   c.checkNear("i₅ of IIA(p=0) in normal form = 0 (Table 8.3)", 0.0, i5n, kTol * 8);
   c.checkNear("i₅ of IIA(p=0) translated by (1, −2, 1/3) = 184/81 (not invariant)", 184.0 / 81, i5t, kTol * 64);
-  recordFails(c, "i₅ is a rigid-motion invariant (IIA(p=0) translated)", "E8.3", abs(i5t - i5n), kTol * 8);
+  c.checkPrintedFails("i₅ is a rigid-motion invariant (IIA(p=0) translated)", "E8.3", abs(i5t - i5n), kTol * 8);
   // A' = det(M) A (not det(M)² A).
   auto g = rng(94);
   const MX s = randomGenerators(2, g), m = randomGL(2, g);
@@ -556,7 +551,7 @@ void table83(Context& c) {
   const M6 A = s.col(0) * s.col(1).transpose() - s.col(1) * s.col(0).transpose();
   const M6 Am = sm.col(0) * sm.col(1).transpose() - sm.col(1) * sm.col(0).transpose();
   c.checkResidual("A' = det(M) A", maxAbs(MX(Am - m.determinant() * A)), kTol * 16);
-  recordFails(c, "A' = det(M)² A", "E8.3", maxAbs(MX(Am - m.determinant() * m.determinant() * A)), kTol * 16);
+  c.checkPrintedFails("A' = det(M)² A", "E8.3", maxAbs(MX(Am - m.determinant() * m.determinant() * A)), kTol * 16);
   // IA moduli: roots of i₃x² + i₂x + i₁ = identification's pitches (posed, random basis).
   const MX posed = SE3d::Random(g).adjoint() * normalForm({T::IA_2, {pa, pb}}) * randomGL(2, g);
   const Inv2 a = inv2(posed);
@@ -584,7 +579,7 @@ void twoLines(Context& c) {
   c.checkEqual("two skew lines (l = 1, φ = π/3) span an IA system", "IA", screwSystemTypeName(id.type));
   c.checkNear("p_a = (l/2) cot(φ/2) = 0.866025…", l / 2 / std::tan(phi / 2), id.parameters[0], kTol * 16);
   c.checkNear("p_b = −(l/2) tan(φ/2) = −0.288675…", -l / 2 * std::tan(phi / 2), id.parameters[1], kTol * 16);
-  recordFails(c, "moduli (l/2) tan(φ/2), −(l/2) cot(φ/2)", "E8.5",
+  c.checkPrintedFails("moduli (l/2) tan(φ/2), −(l/2) cot(φ/2)", "E8.5",
               abs(l / 2 * std::tan(phi / 2) - id.parameters[0]) + abs(-l / 2 / std::tan(phi / 2) - id.parameters[1]), kTol);
   const auto id0 = identifyScrewSystem<double>(cols({scr(1, 0, 0, 0, 0, 0), scr(std::cos(phi), std::sin(phi), 0, 0, 0, 0)}));
   c.checkEqual("l = 0: IIA(p=0)", "IIA(p=0)", screwSystemTypeName(id0.type));
@@ -616,7 +611,7 @@ void fourSystems(Context& c) {
   const double iinf = double(br.transpose() * qis * br);
   const double printed = -(std::pow(P(1, 5) - P(2, 4), 2) + std::pow(P(2, 6) - P(3, 5), 2) + std::pow(P(3, 4) - P(1, 6), 2));
   c.checkNear("i∞ = −2((p15 − p24)² + (p26 − p35)² + (p34 − p16)²)", iinf, 2 * printed, kTol * 8);
-  recordFails(c, "i∞ = −((p15 − p24)² + …)", "E8.6", abs(printed - iinf), kTol * 8);
+  c.checkPrintedFails("i∞ = −((p15 − p24)² + …)", "E8.6", abs(printed - iinf), kTol * 8);
   const auto id = identifyScrewSystem(ScrewSystem<double>(four));
   c.checkEqual("identifyScrewSystem(4-system) reports the reciprocal 2-system's type", "IA", screwSystemTypeName(id.type));
 }
@@ -663,7 +658,7 @@ void table84(Context& c) {
     const Inv3 a = inv3(normalForm(r));
     c.checkResidual(screwSystemTypeName(r.t) + ": all five invariants vanish",
                     abs(a.d0) + abs(a.phi) + abs(a.theta) + abs(a.dinf) + abs(a.i0), kTol);
-    recordFails(c, screwSystemTypeName(r.t) + ": Φ = 2 (Table 8.4)", "E8.9", abs(a.phi - 2), kTol);
+    c.checkPrintedFails(screwSystemTypeName(r.t) + ": Φ = 2 (Table 8.4)", "E8.9", abs(a.phi - 2), kTol);
   }
   auto ranks = [](const Row& r) {
     const MX nf = normalForm(r);
@@ -681,7 +676,7 @@ void table84(Context& c) {
   const double cprod = w1.dot(v2.cross(v3)) / (w1.norm() * v2.norm() * v3.norm());
   c.checkNear("IC: ω₁·(v₂×v₃)/(|ω₁||v₂||v₃|) = p/√(1+p²)", p / sqrt(1 + p * p), abs(cprod), kTol);
   c.checkNear("… so p² = c²/(1 − c²)", p * p, cprod * cprod / (1 - cprod * cprod), kTol * 4);
-  recordFails(c, "IC: normalised triple product = p√(1+p²)", "E8.10", abs(abs(cprod) - p * sqrt(1 + p * p)), kTol);
+  c.checkPrintedFails("IC: normalised triple product = p√(1+p²)", "E8.10", abs(abs(cprod) - p * sqrt(1 + p * p)), kTol);
   // Moduli of A-systems = roots of the cubic; IB₀ moduli from Φ and i₀.
   const Inv3 ib0 = inv3(normalForm({T::IB0_3, {pa, 0.4}}));
   c.checkNear("IB₀: p_a = −det Υ₀ / Φ", pa, -ib0.d0 / ib0.phi, kTol);
@@ -792,29 +787,26 @@ void unionIntersection(Context& c) {
 
 }  // namespace
 
-#define GF08(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-
-GF08("GF-8.1-screw-system-and-grassmannian", "n-systems as points of G(n,6): Plücker vectors, ∧ⁿAd, basis change", "GF §8.1", grassmannian);
-GF08("GF-8.1-1-systems-moduli", "1-systems: pitch quadrics Q_p, pitch round trip, p = ∞", "GF §8.1", oneSystems);
-GF08("GF-8.1-reciprocal-system", "Reciprocal system: dimension 6 − n, involution, Ad-equivariance (E8.1)", "GF §8.1", reciprocal);
-GF08("GF-8.1-derived-systems-completion", "Derived systems and the completion group of every normal form", "GF §8.1", completionStudy);
-GF08("GF-8.2-isotropy-algebra", "Isotropy algebras of the normal forms; discrete symmetries", "GF §8.2", isotropyStudy);
-GF08("GF-8.2-normal-forms-2-systems", "Table 8.1: posed 2-system normal forms identified", "GF §8.2", normalForms2);
-GF08("GF-8.2.7-SE3-2-system-reduction", "Reduction of SE(3) 2-systems to (i, p_a i), (j, p_b j) (E8.2)", "GF §8.2.7", reduction2);
-GF08("GF-8.2-IA-cylindroid", "IA 2-systems: the two real lines and the cylindroid", "GF §8.2", cylindroid);
-GF08("GF-8.3-3-system-generalities", "3-systems: moduli count, type I / II", "GF §8.3", generalities3);
-GF08("GF-8.3-normal-forms-3-systems", "Table 8.2: posed 3-system normal forms identified", "GF §8.3", normalForms3);
-GF08("GF-8.3-regulus-quadrics", "Lines of type-I 3-systems: hyperboloid, paraboloid (E8.7), plane pair (E8.8)", "GF §8.3", reguli);
-GF08("GF-8.3-alpha-beta-planes", "α- and β-planes as IIA(0), IIC(0), IIB(0), IID", "GF §8.3", alphaBeta);
-GF08("GF-8.3-reciprocal-3-systems", "Reciprocal 3-systems keep their type; IA₁ moduli negate", "GF §8.3", reciprocal3);
-GF08("GF-8.4.1-pitch-of-1-and-5-systems", "Pitch of a 5-system from its Plücker vector (E8.4)", "GF §8.4.1", pitch15);
-GF08("GF-8.4.2-2-system-invariants", "2-system invariants i₁, i₂, i₃ and the bracket identities", "GF §8.4.2", invariants2);
-GF08("GF-8.4.2-extra-invariants-table-8.3", "Table 8.3; i₄, i₅ not invariant (E8.3)", "GF §8.4.2", table83);
-GF08("GF-8.4.2-two-lines-example", "Two skew lines span an IA system (E8.5)", "GF §8.4.2", twoLines);
-GF08("GF-8.4.3-4-systems-pluecker", "4-systems via the Plücker coordinates of the reciprocal 2-system (E8.6)", "GF §8.4.3", fourSystems);
-GF08("GF-8.4.4-3-system-invariants", "Table 8.4 (E8.9), IC modulus (E8.10), moduli from the cubic", "GF §8.4.4", table84);
-GF08("GF-8.4.4-example-bracket-3-system", "The bracket-generated 3-system is IIB with pitch p", "GF §8.4.4", bracketExample);
-GF08("GF-8.5-union-intersection", "Union, intersection, shuffle product and de Morgan (E8.11)", "GF §8.5", unionIntersection);
+SOMA_STUDY_DOUBLE("GF-8.1-screw-system-and-grassmannian", "n-systems as points of G(n,6): Plücker vectors, ∧ⁿAd, basis change", "GF §8.1", grassmannian);
+SOMA_STUDY_DOUBLE("GF-8.1-1-systems-moduli", "1-systems: pitch quadrics Q_p, pitch round trip, p = ∞", "GF §8.1", oneSystems);
+SOMA_STUDY_DOUBLE("GF-8.1-reciprocal-system", "Reciprocal system: dimension 6 − n, involution, Ad-equivariance (E8.1)", "GF §8.1", reciprocal);
+SOMA_STUDY_DOUBLE("GF-8.1-derived-systems-completion", "Derived systems and the completion group of every normal form", "GF §8.1", completionStudy);
+SOMA_STUDY_DOUBLE("GF-8.2-isotropy-algebra", "Isotropy algebras of the normal forms; discrete symmetries", "GF §8.2", isotropyStudy);
+SOMA_STUDY_DOUBLE("GF-8.2-normal-forms-2-systems", "Table 8.1: posed 2-system normal forms identified", "GF §8.2", normalForms2);
+SOMA_STUDY_DOUBLE("GF-8.2.7-SE3-2-system-reduction", "Reduction of SE(3) 2-systems to (i, p_a i), (j, p_b j) (E8.2)", "GF §8.2.7", reduction2);
+SOMA_STUDY_DOUBLE("GF-8.2-IA-cylindroid", "IA 2-systems: the two real lines and the cylindroid", "GF §8.2", cylindroid);
+SOMA_STUDY_DOUBLE("GF-8.3-3-system-generalities", "3-systems: moduli count, type I / II", "GF §8.3", generalities3);
+SOMA_STUDY_DOUBLE("GF-8.3-normal-forms-3-systems", "Table 8.2: posed 3-system normal forms identified", "GF §8.3", normalForms3);
+SOMA_STUDY_DOUBLE("GF-8.3-regulus-quadrics", "Lines of type-I 3-systems: hyperboloid, paraboloid (E8.7), plane pair (E8.8)", "GF §8.3", reguli);
+SOMA_STUDY_DOUBLE("GF-8.3-alpha-beta-planes", "α- and β-planes as IIA(0), IIC(0), IIB(0), IID", "GF §8.3", alphaBeta);
+SOMA_STUDY_DOUBLE("GF-8.3-reciprocal-3-systems", "Reciprocal 3-systems keep their type; IA₁ moduli negate", "GF §8.3", reciprocal3);
+SOMA_STUDY_DOUBLE("GF-8.4.1-pitch-of-1-and-5-systems", "Pitch of a 5-system from its Plücker vector (E8.4)", "GF §8.4.1", pitch15);
+SOMA_STUDY_DOUBLE("GF-8.4.2-2-system-invariants", "2-system invariants i₁, i₂, i₃ and the bracket identities", "GF §8.4.2", invariants2);
+SOMA_STUDY_DOUBLE("GF-8.4.2-extra-invariants-table-8.3", "Table 8.3; i₄, i₅ not invariant (E8.3)", "GF §8.4.2", table83);
+SOMA_STUDY_DOUBLE("GF-8.4.2-two-lines-example", "Two skew lines span an IA system (E8.5)", "GF §8.4.2", twoLines);
+SOMA_STUDY_DOUBLE("GF-8.4.3-4-systems-pluecker", "4-systems via the Plücker coordinates of the reciprocal 2-system (E8.6)", "GF §8.4.3", fourSystems);
+SOMA_STUDY_DOUBLE("GF-8.4.4-3-system-invariants", "Table 8.4 (E8.9), IC modulus (E8.10), moduli from the cubic", "GF §8.4.4", table84);
+SOMA_STUDY_DOUBLE("GF-8.4.4-example-bracket-3-system", "The bracket-generated 3-system is IIB with pitch p", "GF §8.4.4", bracketExample);
+SOMA_STUDY_DOUBLE("GF-8.5-union-intersection", "Union, intersection, shuffle product and de Morgan (E8.11)", "GF §8.5", unionIntersection);
 
 }  // namespace soma::studies::gf08::SOMA_UNITY_ID

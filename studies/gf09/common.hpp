@@ -135,21 +135,4 @@ inline Vec6<S> twistOf(const Bivector<PGA, S>& b) {
   return t;
 }
 
-/// A check of a printed formula that must FAIL (an erratum): passes when residual > tol.
-inline bool recordFails(Context& c, const std::string& name, const std::string& erratum,
-                        double residual, double tol) {
-  return c.record(name + " [as printed]", "fails (erratum " + erratum + ")",
-                  "residual " + toString(residual, 6), residual, tol,
-                  std::isfinite(residual) && residual > tol);
-}
-
 }  // namespace soma::studies::gf09
-
-/// Register a double-only chapter-9 study whose body is FN(Context&).
-#define GF09_STUDY(ID, TITLE, SOURCE, FN)                       \
-  SOMA_STUDY({.id = ID,                                         \
-              .title = TITLE,                                   \
-              .source = SOURCE,                                 \
-              .chapter = ::soma::studies::gf09::kChapter,       \
-              .scalarGeneric = false,                           \
-              .run = [](::soma::studies::Context& c) { FN(c); }})

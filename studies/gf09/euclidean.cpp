@@ -64,13 +64,13 @@ void euclideanGroup(Context& c) {
   const Motor fixedOrigin = Motor(Motor(rr * point(Vec3<S>::Zero())) * dagger(rr));
   const S notPm1 = std::min(maxAbsDiff(rr, Motor(S(1))), maxAbsDiff(rr, Motor(S(-1))));
   c.checkResidual("a rotor g ≠ ±1 (distance to ±1 = " + str(notPm1) + ") fixes the origin", maxAbsDiff(fixedOrigin, point(Vec3<S>::Zero())), tol);
-  recordFails(c, "\"the isotropy group of any point consists of 1 and −1\": distance of that fixing element from ±1", "E9.1",
+  c.checkPrintedFails("\"the isotropy group of any point consists of 1 and −1\": distance of that fixing element from ±1", "E9.1",
               notPm1, tol);
   c.note("E9.1 (wording): the isotropy group of a point is a copy of Spin(3); the kernel of the action "
          "(elements fixing every point) is {±1}. Catalogue note: in Ch. 10 points are grade-3 and the plain "
          "conjugate is used; here (§9.2) the point is 1 + x𝐞 and the right factor is (g − ½tg𝐞)*.");
 }
-GF09_STUDY("GF-9.2-euclidean-group-Cl0n1", "SE(n) double-covered by g + ½tg𝐞 in Cℓ⁺(0,n,1)", "GF §9.2", euclideanGroup);
+SOMA_STUDY_DOUBLE("GF-9.2-euclidean-group-Cl0n1", "SE(n) double-covered by g + ½tg𝐞 in Cℓ⁺(0,n,1)", "GF §9.2", euclideanGroup);
 
 // ---- GF §9.2 planar: Cℓ(0,2,1), e₁, e₂ ↦ 0, 1 and 𝐞 ↦ 2 --------------------------------------
 using P2 = Signature<0, 2, 1>;
@@ -145,10 +145,10 @@ void se2Rotors(Context& c) {
               std::hypot(x, y) / delta * Tolerance<S>::sqrtEpsilon());
   c.checkResidual("pure translation: h_{e₁e₂} = 0 exactly (centre undefined)", abs(exp(T).coeff(k12)), 0.0);
   // Minor erratum: "identifying ½e₁e₂ with i": (½e₁e₂)² = −¼, it is e₁e₂ that squares to −1.
-  recordFails(c, "(½e₁e₂)² = −1 (\"identifying ½e₁e₂ with i\")", "minor 5566",
+  c.checkPrintedFails("(½e₁e₂)² = −1 (\"identifying ½e₁e₂ with i\")", "minor 5566",
               maxAbsDiff(h12 * h12, E2(S(-1))), tol);
 }
-GF09_STUDY("GF-9.2-SE2-rotors", "Planar rigid motions as rotors of Cℓ⁺(0,2,1); centre of rotation", "GF §9.2", se2Rotors);
+SOMA_STUDY_DOUBLE("GF-9.2-SE2-rotors", "Planar rigid motions as rotors of Cℓ⁺(0,2,1); centre of rotation", "GF §9.2", se2Rotors);
 
 // ---- GF §9.2, GF-9.2-planar-BCH --------------------------------------------------------------
 void planarBch(Context& c) {
@@ -171,7 +171,7 @@ void planarBch(Context& c) {
   auto closed = [&](S x) { return e2of(cos(phi / 2), sin(phi / 2), sin(phi / 2) * y, -sin(phi / 2) * x); };
   c.checkResidual("e^{θ₁C_a}e^{θ₂C_b} = cos φ/2 + sin φ/2 (e₁e₂ + y e₁𝐞 − x e₂𝐞), x corrected (θ₁ = 0.7, θ₂ = 1.9)",
                   maxAbsDiff(P, closed(xCorr)), tol);
-  recordFails(c, "x = αa_x + βb_x + γ(b_y − a_y)", "E9.2", maxAbsDiff(P, closed(xPrinted)), tol);
+  c.checkPrintedFails("x = αa_x + βb_x + γ(b_y − a_y)", "E9.2", maxAbsDiff(P, closed(xPrinted)), tol);
   const Dense<P2, S> comm(Ca * Cb - Cb * Ca);
   Bivector<P2, S> commWant;
   commWant.setCoeff(k1n, 0.5 * (b(0) - a(0))), commWant.setCoeff(k2n, 0.5 * (b(1) - a(1)));
@@ -203,7 +203,7 @@ void planarBch(Context& c) {
   c.note("E9.2: the printed x = αa_x + βb_x + γ(b_y − a_y) must read −γ(b_y − a_y); the expansion at "
          "5619–5621 and the final single-exponential formula (which passes here) already imply the minus sign.");
 }
-GF09_STUDY("GF-9.2-planar-BCH", "Planar Campbell–Baker–Hausdorff: composing two rotations", "GF §9.2", planarBch);
+SOMA_STUDY_DOUBLE("GF-9.2-planar-BCH", "Planar Campbell–Baker–Hausdorff: composing two rotations", "GF §9.2", planarBch);
 
 // ---- GF §9.3, GF-9.3-dual-quaternion-isomorphism ---------------------------------------------
 void dqIsomorphism(Context& c) {
@@ -264,7 +264,7 @@ void dqIsomorphism(Context& c) {
   c.checkResidual("extreme a₀ = 0 (θ = π), t = (1, 2, 3)", (dqCoeffs(motor(rpi, Vec3<S>(1, 2, 3))) - dqCoeffs(hpi)).cwiseAbs().maxCoeff(), tol);
   c.checkResidual("extreme t = 0: g + ½tg𝐞 = g", maxAbsDiff(motor(rpi, Vec3<S>::Zero()), rpi), 0.0);
 }
-GF09_STUDY("GF-9.3-dual-quaternion-isomorphism", "Cℓ⁺(0,3,1) ≅ ℍ ⊗ 𝔻: the book's expansion against soma's DualQuaternion",
+SOMA_STUDY_DOUBLE("GF-9.3-dual-quaternion-isomorphism", "Cℓ⁺(0,3,1) ≅ ℍ ⊗ 𝔻: the book's expansion against soma's DualQuaternion",
            "GF §9.3", dqIsomorphism);
 
 // ---- GF §9.3, GF-9.3-study-quadric -----------------------------------------------------------
@@ -312,7 +312,7 @@ void studyQuadric(Context& c) {
   c.checkEqual("±ȟ: the same point of PR⁷", "yes",
                StudyParameters<S>(dqCoeffs(M)).isApprox(StudyParameters<S>(Vec8<S>(-dqCoeffs(M))), tol) ? "yes" : "no");
 }
-GF09_STUDY("GF-9.3-study-quadric", "Unit dual quaternions and the Study quadric", "GF §9.3", studyQuadric);
+SOMA_STUDY_DOUBLE("GF-9.3-study-quadric", "Unit dual quaternions and the Study quadric", "GF §9.3", studyQuadric);
 
 // ---- GF §9.3, GF-9.3-lie-algebra-adjoint -----------------------------------------------------
 void lieAdjoint(Context& c) {
@@ -348,14 +348,14 @@ void lieAdjoint(Context& c) {
   c.checkResidual("½[v̌, ǔ] = v̌ × ǔ = v₀ × u₀ + ε(v₀ × u₁ + v₁ × u₀) (20 random)", cross, tol);
   c.checkResidual("v̌·ǔ = v₀·u₀ + ε(v₀·u₁ + v₁·u₀)", dot, tol);
   c.checkResidual("ȟ(v₀ + εv₁)ȟ* = (Rv₀, Rv₁ + t × Rv₀) = Ad(X)(ω; v) of SE3::adjoint()", adj, tol);
-  recordFails(c, "dual part h₀v₁h₀* + [h₀v₁h₀*, t]/2 = Rv₁ + Rv₁ × t", "E9.3", printedErr, tol);
+  c.checkPrintedFails("dual part h₀v₁h₀* + [h₀v₁h₀*, t]/2 = Rv₁ + Rv₁ × t", "E9.3", printedErr, tol);
   // [i, j] = 2ij = 2k in the Clifford picture: [e₂e₃, e₃e₁] = 2 e₂e₃e₃e₁ = 2e₁e₂·(−1)·(−1)…
   const Dense<PGA, S> i = gens<PGA>({1, 2}), j = gens<PGA>({2, 0}), k = gens<PGA>({0, 1});
   c.checkResidual("[i, j] = 2ij = 2k with i = e₂e₃, j = e₃e₁, k = e₁e₂", maxAbsDiff(Dense<PGA, S>(i * j - j * i), Dense<PGA, S>(k * S(2))), 0.0);
   c.note("E9.3: the adjoint's dual part is h₀v₁h₀* + ½[t, h₀v₀h₀*] = Rv₁ + t × Rv₀, i.e. Ad = [[R, 0], [TR, R]] "
          "with T x = t × x; the printed form uses v₁ in the commutator and the wrong order.");
 }
-GF09_STUDY("GF-9.3-lie-algebra-adjoint", "se(3) as dual vectors: bracket, dot product, adjoint action", "GF §9.3", lieAdjoint);
+SOMA_STUDY_DOUBLE("GF-9.3-lie-algebra-adjoint", "se(3) as dual vectors: bracket, dot product, adjoint action", "GF §9.3", lieAdjoint);
 
 // ---- GF §9.3, GF-9.3-quaternion-product-transference -----------------------------------------
 void transference(Context& c) {
@@ -389,7 +389,7 @@ void transference(Context& c) {
   c.checkResidual("quaternion product (a₀ + a)(b₀ + b) = a₀b₀ − a·b + a₀b + b₀a + a×b (20 random)", real, tol);
   c.checkResidual("transferred to dual scalars/vectors = 8-component product (DualQuaternion and Cℓ⁺(0,3,1))", worst, tol);
 }
-GF09_STUDY("GF-9.3-quaternion-product-transference", "The principle of transference for the quaternion product",
+SOMA_STUDY_DOUBLE("GF-9.3-quaternion-product-transference", "The principle of transference for the quaternion product",
            "GF §9.3", transference);
 
 // ---- GF §9.3, GF-9.3-exp-log -----------------------------------------------------------------
@@ -454,7 +454,7 @@ void expLog(Context& c) {
   c.note("p is the translation along the axis (pitch × θ). The bivector exponential of multivector.hpp "
          "uses the closed form for Cℓ(0,3,1), whose B² = a + R has R ∝ the null pseudoscalar.");
 }
-GF09_STUDY("GF-9.3-exp-log", "Exponential of a dual-angle screw; translation formula", "GF §9.3", expLog);
+SOMA_STUDY_DOUBLE("GF-9.3-exp-log", "Exponential of a dual-angle screw; translation formula", "GF §9.3", expLog);
 
 }  // namespace
 }  // namespace soma::studies::gf09::SOMA_UNITY_ID

@@ -327,16 +327,15 @@ void fig91(Context& c) {
                  "dashed to it), ť = ľ × ň.");
 }
 
-#define GF9(ID, TITLE, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = "GF §9.4", .chapter = kChapter9, .scalarGeneric = false, .run = FN})
-GF9("GF-9.4-lines-as-dual-vectors", "Lines as unit dual vectors; ruled surfaces ľ(λ) = v + εr × v", dualVectors);
-GF9("GF-9.4-common-perpendicular-dual-angle", "Dual angle α + εd and the common perpendicular ľ₁ × ľ₂ = sin(α̌)ň", dualAngleStudy);
-GF9("GF-9.4-striction-and-dual-frenet", "Striction point, distribution parameter and the dual Frenet frame (E9.4)", strictionFrenet);
-GF9("GF-9.4-hyperboloid-regulus-invariants", "Invariants of a regulus: κ₁ = ∓d cot α, τ̌ = cot α ± εd (E9.5, E9.6)", regulusInvariants);
-GF9("GF-9.4-ruled-helicoid", "Ruled helicoid: regulus invariants times (1 + εp), helical striction curve", ruledHelicoid);
-GF9("GF-9.4-cylindroid-invariants", "Cylindroid as a ruled surface: κ₁ = −2r sin 2θ, striction on the nodal line", cylindroidInvariants);
-GF9("GF-9.4-fig9.1-line-sweeps-regulus", "Fig. 9.1: a line sweeps out a cylindrical regulus", fig91);
-#undef GF9
+// §9.4 uses ch. 6's helpers (namespace gf06) but reports under ch. 9.
+constexpr const char* kChapter = kChapter9;
+SOMA_STUDY_DOUBLE("GF-9.4-lines-as-dual-vectors", "Lines as unit dual vectors; ruled surfaces ľ(λ) = v + εr × v", "GF §9.4", dualVectors);
+SOMA_STUDY_DOUBLE("GF-9.4-common-perpendicular-dual-angle", "Dual angle α + εd and the common perpendicular ľ₁ × ľ₂ = sin(α̌)ň", "GF §9.4", dualAngleStudy);
+SOMA_STUDY_DOUBLE("GF-9.4-striction-and-dual-frenet", "Striction point, distribution parameter and the dual Frenet frame (E9.4)", "GF §9.4", strictionFrenet);
+SOMA_STUDY_DOUBLE("GF-9.4-hyperboloid-regulus-invariants", "Invariants of a regulus: κ₁ = ∓d cot α, τ̌ = cot α ± εd (E9.5, E9.6)", "GF §9.4", regulusInvariants);
+SOMA_STUDY_DOUBLE("GF-9.4-ruled-helicoid", "Ruled helicoid: regulus invariants times (1 + εp), helical striction curve", "GF §9.4", ruledHelicoid);
+SOMA_STUDY_DOUBLE("GF-9.4-cylindroid-invariants", "Cylindroid as a ruled surface: κ₁ = −2r sin 2θ, striction on the nodal line", "GF §9.4", cylindroidInvariants);
+SOMA_STUDY_DOUBLE("GF-9.4-fig9.1-line-sweeps-regulus", "Fig. 9.1: a line sweeps out a cylindrical regulus", "GF §9.4", fig91);
 
 }  // namespace
 }  // namespace soma::studies::gf06::SOMA_UNITY_ID

@@ -41,12 +41,6 @@ double md(const clifford::Multivector<Cl031, S, A>& a, const clifford::Multivect
   return clifford::maxAbsDiff(a, b);
 }
 double tol(int ulps = 256) { return Tolerance<S>::identity(ulps); }
-std::string str(double x) { return toString(x, 6); }
-/// The printed formula of an erratum, shown failing (residual above the corrected formula's tolerance).
-void recordFails(Context& c, const std::string& name, const std::string& erratum, double residual, double t) {
-  c.record(name + " [as printed]", "fails (erratum " + erratum + ")", "residual " + str(residual), residual, t,
-           residual > t);
-}
 /// Runs f over `n` random trials and returns the largest value it reports.
 template <class F> double worst(int n, F&& f) {
   double w = 0;
@@ -55,12 +49,9 @@ template <class F> double worst(int n, F&& f) {
 }
 SE3<S> randomMotion(std::mt19937_64& g, double r = 2) { return SE3<S>(SO3<S>::Random(g), rvec(g, r)); }
 
-#define GF10_STUDY(ID, TITLE, SOURCE, ...) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SOURCE, .chapter = kChapter, .scalarGeneric = false, .run = __VA_ARGS__})
-
 // ---- §10.1 the elements -----------------------------------------------------------------------
 
-GF10_STUDY("GF-10.1.1-planes", "Planes π = n + d𝐞: ππ* = 1, the motion law n' = Rn, d' = d + Rn·t", "GF §10.1.1",
+SOMA_STUDY_DOUBLE("GF-10.1.1-planes", "Planes π = n + d𝐞: ππ* = 1, the motion law n' = Rn, d' = d + Rn·t", "GF §10.1.1",
            [](Context& c) {
              auto g = rng(101);
              c.checkResidual("ππ* = |n|² (20 random (n, d))", worst(20, [&](int) {
@@ -111,7 +102,7 @@ GF10_STUDY("GF-10.1.1-planes", "Planes π = n + d𝐞: ππ* = 1, the motion law
                              tol());
            });
 
-GF10_STUDY("GF-10.1.2-points-and-free-vectors", "Points e1e2e3 + x e2e3𝐞 + …: pp* = 1, hph* = point(Rx + t), free vectors rotate",
+SOMA_STUDY_DOUBLE("GF-10.1.2-points-and-free-vectors", "Points e1e2e3 + x e2e3𝐞 + …: pp* = 1, hph* = point(Rx + t), free vectors rotate",
            "GF §10.1.2", [](Context& c) {
              auto g = rng(102);
              double conj = 0, norm = 0, act = 0, freev = 0, neg = 0;
@@ -140,7 +131,7 @@ GF10_STUDY("GF-10.1.2-points-and-free-vectors", "Points e1e2e3 + x e2e3𝐞 + �
                          py.element().coeff(basis::e31e.mask), 0.0);
            });
 
-GF10_STUDY("GF-10.1.3-lines", "Lines v·(e2e3, e3e1, e1e2) + u·(e1𝐞, e2𝐞, e3𝐞): ℓℓ* = |v|² − 2(v·u)e1e2e3𝐞; hℓh*",
+SOMA_STUDY_DOUBLE("GF-10.1.3-lines", "Lines v·(e2e3, e3e1, e1e2) + u·(e1𝐞, e2𝐞, e3𝐞): ℓℓ* = |v|² − 2(v·u)e1e2e3𝐞; hℓh*",
            "GF §10.1.3", [](Context& c) {
              auto g = rng(103);
              double cj = 0, nn = 0, act = 0, rev = 0;
@@ -175,7 +166,7 @@ GF10_STUDY("GF-10.1.3-lines", "Lines v·(e2e3, e3e1, e1e2) + u·(e1𝐞, e2𝐞,
 
 // ---- §10.2.1 incidence ------------------------------------------------------------------------
 
-GF10_STUDY("GF-10.2.1-incidence-plane-point", "π ∧ p = ½(πp − pπ) = (x·n − d)e1e2e3𝐞", "GF §10.2.1", [](Context& c) {
+SOMA_STUDY_DOUBLE("GF-10.2.1-incidence-plane-point", "π ∧ p = ½(πp − pπ) = (x·n − d)e1e2e3𝐞", "GF §10.2.1", [](Context& c) {
   auto g = rng(211);
   c.checkResidual("π ∧ p = ½(πp − pπ) = (x·n − d) e1e2e3𝐞 (20 random)", worst(20, [&](int) {
                     const Plane<S> pi(rvec(g), uni(g));
@@ -197,7 +188,7 @@ GF10_STUDY("GF-10.2.1-incidence-plane-point", "π ∧ p = ½(πp − pπ) = (x·
                incident(Point<S>(V3(on + pi.normal() * (r / 4 * sc))), pi) ? "incident" : "not incident");
 });
 
-GF10_STUDY("GF-10.2.1-incidence-plane-line", "π ∧ ℓ = ½(πℓ + ℓπ) = (n·v)e1e2e3 + (n × u + d v)·(e2e3𝐞, e3e1𝐞, e1e2𝐞) (E10.1)",
+SOMA_STUDY_DOUBLE("GF-10.2.1-incidence-plane-line", "π ∧ ℓ = ½(πℓ + ℓπ) = (n·v)e1e2e3 + (n × u + d v)·(e2e3𝐞, e3e1𝐞, e1e2𝐞) (E10.1)",
            "GF §10.2.1", [](Context& c) {
              auto g = rng(212);
              double sym = 0, corrected = 0, printed = 0;
@@ -217,7 +208,7 @@ GF10_STUDY("GF-10.2.1-incidence-plane-line", "π ∧ ℓ = ½(πℓ + ℓπ) = (
              }
              c.checkResidual("π ∧ ℓ = ½(πℓ + ℓπ)", sym, tol());
              c.checkResidual("coefficients with the e1e2𝐞 term n_x u_y − n_y u_x + d v_z (corrected)", corrected, tol());
-             recordFails(c, "e1e2𝐞 coefficient n_x u_y − n_y u_x + d v_x", "E10.1", printed, tol());
+             c.checkPrintedFails("e1e2𝐞 coefficient n_x u_y − n_y u_x + d v_x", "E10.1", printed, tol());
              const Plane<S> z0(V3(0, 0, 1), 0);
              const Line<S> inside = Line<S>::throughPoint(V3(1, 2, 0), V3(1, -1, 0));
              c.checkResidual("a line inside the plane: π ∧ ℓ = 0", incidenceResidual(inside, z0), tol(16));
@@ -227,7 +218,7 @@ GF10_STUDY("GF-10.2.1-incidence-plane-line", "π ∧ ℓ = ½(πℓ + ℓπ) = (
                          Point<S>(par).bulk().norm(), tol());
            });
 
-GF10_STUDY("GF-10.2.1-incidence-point-line", "pℓ* + ℓp* = 2(u − p × v)·(e2e3𝐞, e3e1𝐞, e1e2𝐞); ℓ ∧ p ≡ 0", "GF §10.2.1",
+SOMA_STUDY_DOUBLE("GF-10.2.1-incidence-point-line", "pℓ* + ℓp* = 2(u − p × v)·(e2e3𝐞, e3e1𝐞, e1e2𝐞); ℓ ∧ p ≡ 0", "GF §10.2.1",
            [](Context& c) {
              auto g = rng(213);
              double form = 0, wedge0 = 0;
@@ -247,7 +238,7 @@ GF10_STUDY("GF-10.2.1-incidence-point-line", "pℓ* + ℓp* = 2(u − p × v)·(
 
 // ---- §10.2.2 meets ----------------------------------------------------------------------------
 
-GF10_STUDY("GF-10.2.2-meet-two-planes", "ℓ = π1 ∧ π2/√((π1∧π2)(π1∧π2)*); parallel planes meet at infinity", "GF §10.2.2",
+SOMA_STUDY_DOUBLE("GF-10.2.2-meet-two-planes", "ℓ = π1 ∧ π2/√((π1∧π2)(π1∧π2)*); parallel planes meet at infinity", "GF §10.2.2",
            [](Context& c) {
              auto g = rng(221);
              double scal = 0, book = 0, inc = 0, dir = 0;
@@ -287,7 +278,7 @@ GF10_STUDY("GF-10.2.2-meet-two-planes", "ℓ = π1 ∧ π2/√((π1∧π2)(π1�
              c.note("The book's remark that the grade-4 terms cancel (seed 6147) prints e_ke_je_ie_j for e_ke_le_ie_j (typo).");
            });
 
-GF10_STUDY("GF-10.2.2-meet-line-plane", "p = ℓ ∧ π/±√((ℓ∧π)(ℓ∧π)*), sign making the e1e2e3 coefficient +1", "GF §10.2.2",
+SOMA_STUDY_DOUBLE("GF-10.2.2-meet-line-plane", "p = ℓ ∧ π/±√((ℓ∧π)(ℓ∧π)*), sign making the e1e2e3 coefficient +1", "GF §10.2.2",
            [](Context& c) {
              auto g = rng(222);
              double on = 0, ref = 0;
@@ -312,7 +303,7 @@ GF10_STUDY("GF-10.2.2-meet-line-plane", "p = ℓ ∧ π/±√((ℓ∧π)(ℓ∧�
                          Tolerance<S>::rank() / (2 * r));
            });
 
-GF10_STUDY("GF-10.2.2-meet-three-planes", "p = π1 ∧ π2 ∧ π3/±√(…) against a 3×3 linear solve", "GF §10.2.2", [](Context& c) {
+SOMA_STUDY_DOUBLE("GF-10.2.2-meet-three-planes", "p = π1 ∧ π2 ∧ π3/±√(…) against a 3×3 linear solve", "GF §10.2.2", [](Context& c) {
   auto g = rng(223);
   double err = 0;
   for (int i = 0; i < 50; ++i) {
@@ -347,7 +338,7 @@ int shuffleWithN(Blade a, Blade b, int n) {
   return shuffleCoefficient(a, b);  // for n = 4 the corrected formula (shuffle.hpp)
 }
 
-GF10_STUDY("GF-10.2.3-shuffle-definition",
+SOMA_STUDY_DOUBLE("GF-10.2.3-shuffle-definition",
            "The shuffle product by the book's permutation formula (E10.11) = the regressive product; e1e2e3 ∨ e2e3𝐞 = e2e3",
            "GF §10.2.3", [](Context& c) {
              c.checkEqual("e1e2e3 ∨ e2e3𝐞 (book's worked example): coefficient of e2e3", 1, shuffleCoefficient(7, 14));
@@ -368,7 +359,7 @@ GF10_STUDY("GF-10.2.3-shuffle-definition",
              int printedNonzero = 0;
              for (Blade a = 0; a < 16; ++a)
                for (Blade b = 0; b < 16; ++b) printedNonzero += shuffleWithN(a, b, 16) != 0;
-             recordFails(c, "n = \"the dimension of the algebra\" = 16: j + k ≥ n never holds, so every shuffle is 0 and "
+             c.checkPrintedFails("n = \"the dimension of the algebra\" = 16: j + k ≥ n never holds, so every shuffle is 0 and "
                             "e1e2e3 ∨ e2e3𝐞 = e2e3 is lost (|1 − coefficient|)", "E10.11",
                          std::abs(1.0 - shuffleWithN(7, 14, 16)), 0.0);
              c.checkEqual("… non-zero pairs with n = 16", 0, printedNonzero);
@@ -378,7 +369,7 @@ GF10_STUDY("GF-10.2.3-shuffle-definition",
                     "coefficients come out in {−1, 0, 1} (asserted when the table is built).");
            });
 
-GF10_STUDY("GF-10.2.3-join-two-points", "p1 ∨ p2 = (x2 − x1)·(e2e3, e3e1, e1e2) + (x1 × x2)·(e1𝐞, e2𝐞, e3𝐞)", "GF §10.2.3",
+SOMA_STUDY_DOUBLE("GF-10.2.3-join-two-points", "p1 ∨ p2 = (x2 − x1)·(e2e3, e3e1, e1e2) + (x1 × x2)·(e1𝐞, e2𝐞, e3𝐞)", "GF §10.2.3",
            [](Context& c) {
              auto g = rng(232);
              double form = 0, unit = 0, onl = 0;
@@ -405,7 +396,7 @@ GF10_STUDY("GF-10.2.3-join-two-points", "p1 ∨ p2 = (x2 − x1)·(e2e3, e3e1, e
              }());
            });
 
-GF10_STUDY("GF-10.2.3-join-point-line", "p ∨ ℓ = (x·u)𝐞 + (u − x × v)·(e1, e2, e3): the plane of p and ℓ", "GF §10.2.3",
+SOMA_STUDY_DOUBLE("GF-10.2.3-join-point-line", "p ∨ ℓ = (x·u)𝐞 + (u − x × v)·(e1, e2, e3): the plane of p and ℓ", "GF §10.2.3",
            [](Context& c) {
              auto g = rng(233);
              double form = 0, contains = 0;
@@ -423,7 +414,7 @@ GF10_STUDY("GF-10.2.3-join-point-line", "p ∨ ℓ = (x·u)𝐞 + (u − x × v)
              c.checkResidual("p on ℓ: p ∨ ℓ = 0 (another incidence test)", shuffle(Point<S>(V3(1, 2, 7)), l).element().maxAbs(), 0.0);
            });
 
-GF10_STUDY("GF-10.2.3-plane-three-points", "π = p1 ∨ p2 ∨ p3/√(…); collinear ⇔ p1 ∨ p2 ∨ p3 = 0", "GF §10.2.3", [](Context& c) {
+SOMA_STUDY_DOUBLE("GF-10.2.3-plane-three-points", "π = p1 ∨ p2 ∨ p3/√(…); collinear ⇔ p1 ∨ p2 ∨ p3 = 0", "GF §10.2.3", [](Context& c) {
   auto g = rng(234);
   double contains = 0, orient = 0;
   for (int i = 0; i < 20; ++i) {
@@ -440,7 +431,7 @@ GF10_STUDY("GF-10.2.3-plane-three-points", "π = p1 ∨ p2 ∨ p3/√(…); coll
                   tol(16));
 });
 
-GF10_STUDY("GF-10.2.3-point-plane-and-coplanarity", "p ∨ π = d − x·n; four points coplanar ⇔ p1 ∨ p2 ∨ p3 ∨ p4 = 0",
+SOMA_STUDY_DOUBLE("GF-10.2.3-point-plane-and-coplanarity", "p ∨ π = d − x·n; four points coplanar ⇔ p1 ∨ p2 ∨ p3 ∨ p4 = 0",
            "GF §10.2.3", [](Context& c) {
              auto g = rng(235);
              c.checkResidual("p ∨ π = d − x·n (a scalar, 20 random)", worst(20, [&](int) {
@@ -460,7 +451,7 @@ GF10_STUDY("GF-10.2.3-point-plane-and-coplanarity", "p ∨ π = d − x·n; four
                          std::abs(M.determinant()), std::abs(four), tol());
            });
 
-GF10_STUDY("GF-10.2.3-line-line-shuffle", "ℓ1 ∨ ℓ2 = v·μ + u·w, the reciprocal product; coplanar ⇔ 0", "GF §10.2.3",
+SOMA_STUDY_DOUBLE("GF-10.2.3-line-line-shuffle", "ℓ1 ∨ ℓ2 = v·μ + u·w, the reciprocal product; coplanar ⇔ 0", "GF §10.2.3",
            [](Context& c) {
              auto g = rng(236);
              c.checkResidual("ℓ1 ∨ ℓ2 = v·μ + u·w (= Q0 of the 6-vectors, 20 random)", worst(20, [&](int) {
@@ -480,7 +471,7 @@ GF10_STUDY("GF-10.2.3-line-line-shuffle", "ℓ1 ∨ ℓ2 = v·μ + u·w, the rec
 
 // ---- §10.2.4 perpendicularity: the contraction ------------------------------------------------
 
-GF10_STUDY("GF-10.2.4-contraction-definition", "x⌋c = ½(xc − α(c)x); xc = x ∧ c + x⌋c; the derivation rule; (c1 ∧ c2)⌋c3 = c1⌋(c2⌋c3)",
+SOMA_STUDY_DOUBLE("GF-10.2.4-contraction-definition", "x⌋c = ½(xc − α(c)x); xc = x ∧ c + x⌋c; the derivation rule; (c1 ∧ c2)⌋c3 = c1⌋(c2⌋c3)",
            "GF §10.2.4", [](Context& c) {
              auto g = rng(241);
              double def = 0, split = 0, deriv = 0, assoc = 0;
@@ -501,7 +492,7 @@ GF10_STUDY("GF-10.2.4-contraction-definition", "x⌋c = ½(xc − α(c)x); xc = 
              c.note("OCR: seed 6284–6285 renders ⌋ as 'ightharpoonup' inside a broken 'egin' environment.");
            });
 
-GF10_STUDY("GF-10.2.4-plane-plane-angle", "π1⌋π2 = −n·m = −cos∠; perpendicular ⇔ 0", "GF §10.2.4", [](Context& c) {
+SOMA_STUDY_DOUBLE("GF-10.2.4-plane-plane-angle", "π1⌋π2 = −n·m = −cos∠; perpendicular ⇔ 0", "GF §10.2.4", [](Context& c) {
   auto g = rng(242);
   double form = 0, ang = 0;
   for (int i = 0; i < 20; ++i) {
@@ -516,7 +507,7 @@ GF10_STUDY("GF-10.2.4-plane-plane-angle", "π1⌋π2 = −n·m = −cos∠; perp
                   std::abs((Plane<S>(V3(1, 0, 0), 2).element() | Plane<S>(V3(0, 1, 0), -1).element()).scalarPart()), 0.0);
 });
 
-GF10_STUDY("GF-10.2.4-plane-line-perpendicular-plane", "π⌋ℓ = (n × v)·(e1, e2, e3) − (n·u)𝐞: the plane through ℓ perpendicular to π",
+SOMA_STUDY_DOUBLE("GF-10.2.4-plane-line-perpendicular-plane", "π⌋ℓ = (n × v)·(e1, e2, e3) − (n·u)𝐞: the plane through ℓ perpendicular to π",
            "GF §10.2.4", [](Context& c) {
              auto g = rng(243);
              double form = 0, geo = 0;
@@ -540,7 +531,7 @@ GF10_STUDY("GF-10.2.4-plane-line-perpendicular-plane", "π⌋ℓ = (n × v)·(e1
              }());
            });
 
-GF10_STUDY("GF-10.2.4-plane-point-perpendicular-line", "π⌋p = −n·(e2e3, …) − (x × n)·(e1𝐞, …) = line(p, −n)", "GF §10.2.4",
+SOMA_STUDY_DOUBLE("GF-10.2.4-plane-point-perpendicular-line", "π⌋p = −n·(e2e3, …) − (x × n)·(e1𝐞, …) = line(p, −n)", "GF §10.2.4",
            [](Context& c) {
              auto g = rng(244);
              c.checkResidual("π⌋p = the line through p with direction −n, unit without normalising (20 random)", worst(20, [&](int) {
@@ -557,7 +548,7 @@ GF10_STUDY("GF-10.2.4-plane-point-perpendicular-line", "π⌋p = −n·(e2e3, �
                              tol());
            });
 
-GF10_STUDY("GF-10.2.4-line-line-angle", "ℓ1⌋ℓ2 = −v·w (the Killing form); perpendicular ⇔ 0", "GF §10.2.4", [](Context& c) {
+SOMA_STUDY_DOUBLE("GF-10.2.4-line-line-angle", "ℓ1⌋ℓ2 = −v·w (the Killing form); perpendicular ⇔ 0", "GF §10.2.4", [](Context& c) {
   auto g = rng(245);
   double form = 0, ang = 0;
   for (int i = 0; i < 20; ++i) {
@@ -573,7 +564,7 @@ GF10_STUDY("GF-10.2.4-line-line-angle", "ℓ1⌋ℓ2 = −v·w (the Killing form
                   0.0);
 });
 
-GF10_STUDY("GF-10.2.4-line-point-perpendicular-plane", "ℓ⌋p = −v·(e1, e2, e3) − (x·v)𝐞: the plane through p ⟂ ℓ", "GF §10.2.4",
+SOMA_STUDY_DOUBLE("GF-10.2.4-line-point-perpendicular-plane", "ℓ⌋p = −v·(e1, e2, e3) − (x·v)𝐞: the plane through p ⟂ ℓ", "GF §10.2.4",
            [](Context& c) {
              auto g = rng(246);
              c.checkResidual("ℓ⌋p coordinates (20 random)", worst(20, [&](int) {
@@ -592,7 +583,7 @@ GF10_STUDY("GF-10.2.4-line-point-perpendicular-plane", "ℓ⌋p = −v·(e1, e2,
                              md(project(Point<S>(x), l).position(), V3(q + v * v.dot(x - q))), tol());
            });
 
-GF10_STUDY("GF-10.2.4-distances", "Signed point–plane distance p ∨ π (E10.10), point–line (p∨ℓ)(p∨ℓ)*, point–point −(p1∨p2)⌋(p1∨p2)",
+SOMA_STUDY_DOUBLE("GF-10.2.4-distances", "Signed point–plane distance p ∨ π (E10.10), point–line (p∨ℓ)(p∨ℓ)*, point–point −(p1∨p2)⌋(p1∨p2)",
            "GF §10.2.4", [](Context& c) {
              auto g = rng(247);
              double pl = 0, pli = 0, pp = 0, one = 0;
@@ -615,13 +606,13 @@ GF10_STUDY("GF-10.2.4-distances", "Signed point–plane distance p ∨ π (E10.1
              const Plane<S> pi(runit(g), 0.6);
              const V3 x = pi.normal() * (0.6 + 0.25);
              const double pv = shuffle(Point<S>(x), pi);
-             recordFails(c, "p ∨ π is positive when p is on the side the normal points to (p ∨ π + 0.25)", "E10.10",
+             c.checkPrintedFails("p ∨ π is positive when p is on the side the normal points to (p ∨ π + 0.25)", "E10.10",
                          std::abs(pv - 0.25), tol());
              c.checkNear("p ∨ π = d − x·n = −0.25 there (corrected: negative on the normal's side)", -0.25, pv, tol());
              c.checkNear("signedDistance(p, π) = n·x − d = +0.25", 0.25, signedDistance(Point<S>(x), pi), tol());
            });
 
-GF10_STUDY("GF-10.2.4-common-perpendicular", "λ = −2(s⌋s)s + (s⌋e1e2e3𝐞)(s ∨ s), s = [ℓ1, ℓ2]: the common perpendicular",
+SOMA_STUDY_DOUBLE("GF-10.2.4-common-perpendicular", "λ = −2(s⌋s)s + (s⌋e1e2e3𝐞)(s ∨ s), s = [ℓ1, ℓ2]: the common perpendicular",
            "GF §10.2.4", [](Context& c) {
              auto g = rng(248);
              double cond = 0, meets = 0, pitch = 0, sI = 0, closest = 0;

@@ -503,22 +503,19 @@ void cellDecomposition(Context& c) {
   c.checkEqual("fixed points of a generic torus action on Q⁶ (= χ(Q⁶) = 2m + 2, m = 3)", 8, onQuadric);
 }
 
-#define GF11F_STUDY(ID, TITLE, SOURCE, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SOURCE, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-
-GF11F_STUDY("GF-11.2.4-quadric-grassmannians", "Isotropic k-planes of Hy: dimensions 6, 9, 9, 6 (two ways)", "GF §11.2.4",
+SOMA_STUDY_DOUBLE("GF-11.2.4-quadric-grassmannians", "Isotropic k-planes of Hy: dimensions 6, 9, 9, 6 (two ways)", "GF §11.2.4",
             quadricGrassmannians);
-GF11F_STUDY("GF-11.2.4-isotropic-2-plane-normal-form", "O(4) × O(4) reduces every isotropic 2-plane to the standard one",
+SOMA_STUDY_DOUBLE("GF-11.2.4-isotropic-2-plane-normal-form", "O(4) × O(4) reduces every isotropic 2-plane to the standard one",
             "GF §11.2.4", isotropicNormalForm);
-GF11F_STUDY("GF-11.3-flag-projections-fibres", "Fibres of the flag projections: A-plane, lines, quadric surface",
+SOMA_STUDY_DOUBLE("GF-11.3-flag-projections-fibres", "Fibres of the flag projections: A-plane, lines, quadric surface",
             "GF §11.3", flagFibres);
-GF11F_STUDY("GF-11.3-table-11.1", "Table 11.1: flag manifolds, homogeneous spaces, figures in R³ (dimensions two ways)",
+SOMA_STUDY_DOUBLE("GF-11.3-table-11.1", "Table 11.1: flag manifolds, homogeneous spaces, figures in R³ (dimensions two ways)",
             "GF §11.3", table111);
-GF11F_STUDY("GF-11.5-P1xP1-five-points", "Curves of classes α₀β₁ + 2α₁β₀ and 2α₀β₁ + α₁β₀ meet in five points", "GF §11.5",
+SOMA_STUDY_DOUBLE("GF-11.5-P1xP1-five-points", "Curves of classes α₀β₁ + 2α₁β₀ and 2α₀β₁ + α₁β₀ meet in five points", "GF §11.5",
             p1xp1);
-GF11F_STUDY("GF-11.5-bezout-halphen", "Halphen: congruences (m₁,n₁), (m₂,n₂) share m₁m₂ + n₁n₂ lines", "GF §11.5",
+SOMA_STUDY_DOUBLE("GF-11.5-bezout-halphen", "Halphen: congruences (m₁,n₁), (m₂,n₂) share m₁m₂ + n₁n₂ lines", "GF §11.5",
             bezoutHalphen);
-GF11F_STUDY("GF-11.5-cell-decomposition", "The cell decomposition of the Study quadric: Q₅, Q₄, P_A ∪ P_B; χ = 8",
+SOMA_STUDY_DOUBLE("GF-11.5-cell-decomposition", "The cell decomposition of the Study quadric: Q₅, Q₄, P_A ∪ P_B; χ = 8",
             "GF §11.5", cellDecomposition);
 
 }  // namespace

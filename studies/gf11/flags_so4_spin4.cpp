@@ -355,22 +355,17 @@ template <class S> void saletan(Context& c) {
                   abs(DoubleQuaternion<S>(q, cq, s2).normDefect() - s2 * cq.coeffs().squaredNorm()), tol<S>(16));
 }
 
-#define GF11S_STUDY(ID, TITLE, FN)                                                                          \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = "GF §11.1", .chapter = kChapter, .scalarGeneric = true, \
-              .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { FN<S>(c); }); }})
-
-GF11S_STUDY("GF-11.1-stereographic-projection", "Stereographic projection of S³ onto w = 1 from (0,0,0,−1)", stereographic);
-GF11S_STUDY("GF-11.1-flag-to-soma", "An oriented (1,2,3) flag of R⁴ gives a right-handed frame (a soma)", flagToSoma);
-GF11S_STUDY("GF-11.1-flag-SO4-matrix", "The flag's SO(4) matrix [e1 e2 e3 e1∧e2∧e3]", flagSO4);
-GF11S_STUDY("GF-11.1-double-quaternions", "Cl⁺(0,4,0) = H ⊗ Cl(1,0,0): double quaternions act on R⁴ by SO(4)",
+SOMA_STUDY_SCALAR("GF-11.1-stereographic-projection", "Stereographic projection of S³ onto w = 1 from (0,0,0,−1)", "GF §11.1", stereographic);
+SOMA_STUDY_SCALAR("GF-11.1-flag-to-soma", "An oriented (1,2,3) flag of R⁴ gives a right-handed frame (a soma)", "GF §11.1", flagToSoma);
+SOMA_STUDY_SCALAR("GF-11.1-flag-SO4-matrix", "The flag's SO(4) matrix [e1 e2 e3 e1∧e2∧e3]", "GF §11.1", flagSO4);
+SOMA_STUDY_SCALAR("GF-11.1-double-quaternions", "Cl⁺(0,4,0) = H ⊗ Cl(1,0,0): double quaternions act on R⁴ by SO(4)", "GF §11.1",
             doubleQuaternions);
-GF11S_STUDY("GF-11.1-spin4-conditions", "Spin(4): h0h0* + h1h1* = 1, h0h1* + h1h0* = 0 (erratum 6: = 2a·c)",
+SOMA_STUDY_SCALAR("GF-11.1-spin4-conditions", "Spin(4): h0h0* + h1h1* = 1, h0h1* + h1h0* = 0 (erratum 6: = 2a·c)", "GF §11.1",
             spin4Conditions);
-GF11S_STUDY("GF-11.1-spin3xspin3", "Spin(4) = Spin(3) × Spin(3): h = ½(g1 + g2) + ½(g1 − g2)σ", spin3xspin3);
-GF11S_STUDY("GF-11.1-SO4-is-whole-study-quadric", "SO(4) is the whole Study quadric, the exceptional 3-plane included",
+SOMA_STUDY_SCALAR("GF-11.1-spin3xspin3", "Spin(4) = Spin(3) × Spin(3): h = ½(g1 + g2) + ½(g1 − g2)σ", "GF §11.1", spin3xspin3);
+SOMA_STUDY_SCALAR("GF-11.1-SO4-is-whole-study-quadric", "SO(4) is the whole Study quadric, the exceptional 3-plane included", "GF §11.1",
             so4WholeQuadric);
-GF11S_STUDY("GF-11.1-saletan-contraction", "σ² = 1/r², r → ∞: SO(4) contracts to SE(3)", saletan);
-#undef GF11S_STUDY
+SOMA_STUDY_SCALAR("GF-11.1-saletan-contraction", "σ² = 1/r², r → ∞: SO(4) contracts to SE(3)", "GF §11.1", saletan);
 
 }  // namespace
 }  // namespace soma::studies::gf11soma::SOMA_UNITY_ID

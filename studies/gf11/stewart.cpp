@@ -542,17 +542,13 @@ void triangleFigure(Context& c) {
                           "height {:.4f} (Heron).", height));
 }
 
-#define GF11S_STUDY(ID, TITLE, SOURCE, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SOURCE, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-
-GF11S_STUDY("GF-11.5.4-stewart-forty",
+SOMA_STUDY_DOUBLE("GF-11.5.4-stewart-forty",
             "General 6-6 Stewart platform: 40 complex forward-kinematics solutions (homotopy), real postures drawn",
             "GF §11.5.4", stewartForty);
-GF11S_STUDY("GF-11.5.2-6-3-stewart-sixteen", "6-3 Stewart platform: 16 postures (the other 24 paths end singular)",
+SOMA_STUDY_DOUBLE("GF-11.5.2-6-3-stewart-sixteen", "6-3 Stewart platform: 16 postures (the other 24 paths end singular)",
             "GF §11.5.2", sixThree);
-GF11S_STUDY("GF-11-fig-11.2", "Fig. 11.2: two legs of a 6-3 platform sharing a joint form an R-S pair", "GF §11.5.2",
+SOMA_STUDY_DOUBLE("GF-11-fig-11.2", "Fig. 11.2: two legs of a 6-3 platform sharing a joint form an R-S pair", "GF §11.5.2",
             triangleFigure);
-#undef GF11S_STUDY
 SOMA_STUDY({.id = "SOMA-11.5.4-stewart-speed-accuracy",
             .title = "Stewart-Gough forward kinematics: every method × scalar, time, worst residual, completeness",
             .source = "GF §11.5.4",

@@ -42,11 +42,6 @@ template <int N> int rankOf(const Eigen::Matrix<S, 8, N>& m) {
   for (int k = 0; k < sv.size(); ++k) r += sv(k) > Tolerance<S>::rank() * sv(0);
   return r;
 }
-/// The printed statement fails: the residual is above the tolerance.
-bool recordFails(Context& c, const std::string& name, const std::string& erratum, double residual, double t) {
-  return c.record(name + " [as printed]", "fails (erratum " + erratum + ")", "residual " + toString(residual, 6), residual, t,
-                  std::isfinite(residual) && residual > t);
-}
 
 // ---- GF §11.2.1 ----------------------------------------------------------------------------
 void linesThroughIdentity(Context& c) {
@@ -267,7 +262,7 @@ void lineIsotropy(Context& c) {
   const SE3<S> m = StudyParameters<S>(x).toSE3();
   const double slide = (m.translation() - Vec3<S>(0, 0, 2)).norm() + (m.rotation() - Mat3<S>::Identity()).norm();
   c.checkResidual("(1,0,0,0 : 0,0,0,1) with a₂ = a₃ = 0 is the translation by 2 along z", slide, tol());
-  recordFails(c, "\"the line at infinity a₂ = a₃ = 0\" has no motions: distance of that point from a = 0", "GF11-1",
+  c.checkPrintedFails("\"the line at infinity a₂ = a₃ = 0\" has no motions: distance of that point from a = 0", "GF11-1",
               x.head<4>().norm(), tol());
   c.checkEqual("a₀ = a₃ = 0 on the isotropy 3-plane is the line at infinity (a = 0)", "yes",
                StudyParameters<S>(Vec8<S>((Vec8<S>() << 0, 0, 0, 0, 0.3, 0, 0, -1.2).finished())).inExceptionalPlane() ? "yes" : "no");
@@ -389,37 +384,34 @@ void stewartLegQuadric(Context& c) {
 
 }  // namespace
 
-#define GF11_STUDY(ID, TITLE, SOURCE, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SOURCE, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-
-GF11_STUDY("GF-11.2.1-lines-through-identity", "Lines through the identity in the quadric have c₀ = 0", "GF §11.2.1",
+SOMA_STUDY_DOUBLE("GF-11.2.1-lines-through-identity", "Lines through the identity in the quadric have c₀ = 0", "GF §11.2.1",
            linesThroughIdentity);
-GF11_STUDY("GF-11.2.1-rotation-translation-lines", "Rotations about a line and translations are lines; screws are conics",
+SOMA_STUDY_DOUBLE("GF-11.2.1-rotation-translation-lines", "Rotations about a line and translations are lines; screws are conics",
            "GF §11.2.1", rotationTranslationLines);
-GF11_STUDY("GF-11.2.2-three-planes-A-B", "3-planes (I−M)a + (I+M)c = 0, M ∈ O(4): A-planes and B-planes", "GF §11.2.2",
+SOMA_STUDY_DOUBLE("GF-11.2.2-three-planes-A-B", "3-planes (I−M)a + (I+M)c = 0, M ∈ O(4): A-planes and B-planes", "GF §11.2.2",
            threePlanes);
-GF11_STUDY("GF-11.2.2-planes-through-identity", "SO(3)_p (Cayley), SE(2), R³ and the plane at infinity", "GF §11.2.2",
+SOMA_STUDY_DOUBLE("GF-11.2.2-planes-through-identity", "SO(3)_p (Cayley), SE(2), R³ and the plane at infinity", "GF §11.2.2",
            planesThroughIdentity);
-GF11_STUDY("GF-11.2.2-A-plane-cosets", "Cosets g·SO(3)_p are A-planes", "GF §11.2.2", planeCosets);
-GF11_STUDY("GF-11.2.3-intersection-corank", "Intersection of 3-planes: corank = multiplicity of eigenvalue 1 of M₁M₂ᵀ",
+SOMA_STUDY_DOUBLE("GF-11.2.2-A-plane-cosets", "Cosets g·SO(3)_p are A-planes", "GF §11.2.2", planeCosets);
+SOMA_STUDY_DOUBLE("GF-11.2.3-intersection-corank", "Intersection of 3-planes: corank = multiplicity of eigenvalue 1 of M₁M₂ᵀ",
            "GF §11.2.3", intersectionCorank);
-GF11_STUDY("GF-11.2.3-intersection-cases", "A∩A and B∩B empty, A∩B a point; special positions", "GF §11.2.3",
+SOMA_STUDY_DOUBLE("GF-11.2.3-intersection-cases", "A∩A and B∩B empty, A∩B a point; special positions", "GF §11.2.3",
            intersectionCases);
-GF11_STUDY("GF-11.2.3-meet-infinite-A-plane", "Meeting the A-plane at infinity: none, line, point, 2-plane", "GF §11.2.3",
+SOMA_STUDY_DOUBLE("GF-11.2.3-meet-infinite-A-plane", "Meeting the A-plane at infinity: none, line, point, 2-plane", "GF §11.2.3",
            meetInfinite);
-GF11_STUDY("GF-11.2.3-klein-analogue", "The Klein-quadric analogue: α∩α and β∩β a point, α∩β empty", "GF §11.2.3",
+SOMA_STUDY_DOUBLE("GF-11.2.3-klein-analogue", "The Klein-quadric analogue: α∩α and β∩β a point, α∩β empty", "GF §11.2.3",
            kleinAnalogue);
-GF11_STUDY("GF-11.4-line-isotropy-quadric", "Isotropy of a line: the quadric a₀c₀ + a₃c₃ = 0 (erratum: a₀ = a₃ = 0)",
+SOMA_STUDY_DOUBLE("GF-11.4-line-isotropy-quadric", "Isotropy of a line: the quadric a₀c₀ + a₃c₃ = 0 (erratum: a₀ = a₃ = 0)",
            "GF §11.4", lineIsotropy);
-GF11_STUDY("GF-11.4-2R-three-plane", "The 2R dyad lies in a 3-plane (degenerate l = 0 shown)", "GF §11.4", twoRThreePlane);
-GF11_STUDY("GF-11.5-table-11.2", "The intersection ring of the Study quadric (Table 11.2)", "GF §11.5", tableRing);
-GF11_STUDY("GF-11.5-2R-class", "Counts from the ring: 2R, 6R (16), 6-3 Stewart (16), tripod wrist (8), guard 128",
+SOMA_STUDY_DOUBLE("GF-11.4-2R-three-plane", "The 2R dyad lies in a 3-plane (degenerate l = 0 shown)", "GF §11.4", twoRThreePlane);
+SOMA_STUDY_DOUBLE("GF-11.5-table-11.2", "The intersection ring of the Study quadric (Table 11.2)", "GF §11.5", tableRing);
+SOMA_STUDY_DOUBLE("GF-11.5-2R-class", "Counts from the ring: 2R, 6R (16), 6-3 Stewart (16), tripod wrist (8), guard 128",
            "GF §11.5", ringCounts);
-GF11_STUDY("GF-11.5.3-SS-link-variety", "The S–S link variety is a quadric (book's form and soma's agree)", "GF §11.5.3",
+SOMA_STUDY_DOUBLE("GF-11.5.3-SS-link-variety", "The S–S link variety is a quadric (book's form and soma's agree)", "GF §11.5.3",
            ssLinkVariety);
-GF11_STUDY("GF-11.5.3-SS-quadric-at-infinity", "Every S–S variety contains the conic c·c = 0, a = 0", "GF §11.5.3",
+SOMA_STUDY_DOUBLE("GF-11.5.3-SS-quadric-at-infinity", "Every S–S variety contains the conic c·c = 0, a = 0", "GF §11.5.3",
            ssAtInfinity);
-GF11_STUDY("GF-11.5.4-stewart-leg-quadric", "The Stewart leg equation as a quadric in Study parameters", "GF §11.5.4",
+SOMA_STUDY_DOUBLE("GF-11.5.4-stewart-leg-quadric", "The Stewart leg equation as a quadric in Study parameters", "GF §11.5.4",
            stewartLegQuadric);
 
 }  // namespace soma::studies::gf11::SOMA_UNITY_ID

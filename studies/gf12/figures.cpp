@@ -263,12 +263,9 @@ void fig123(Context& c) {
 }
 }  // namespace
 
-#define GF12(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-GF12("GF-12-fig-12.1", "Fig. 12.1: a force acting on a rigid body", "GF §12.2", fig121);
-GF12("GF-12-fig-12.3", "Fig. 12.3: the wrenches acting on the links of a robot", "GF §12.4", fig123);
-GF12("GF-12-fig-12.2", "Fig. 12.2: the four-beam wrist force sensor", "GF §12.3", fig122);
-GF12("GF-12-fig-12.4", "Fig. 12.4: fingers on a rigid body — normals, and friction cones", "GF §12.5–12.6", fig124);
-#undef GF12
+SOMA_STUDY_DOUBLE("GF-12-fig-12.1", "Fig. 12.1: a force acting on a rigid body", "GF §12.2", fig121);
+SOMA_STUDY_DOUBLE("GF-12-fig-12.3", "Fig. 12.3: the wrenches acting on the links of a robot", "GF §12.4", fig123);
+SOMA_STUDY_DOUBLE("GF-12-fig-12.2", "Fig. 12.2: the four-beam wrist force sensor", "GF §12.3", fig122);
+SOMA_STUDY_DOUBLE("GF-12-fig-12.4", "Fig. 12.4: fingers on a rigid body — normals, and friction cones", "GF §12.5–12.6", fig124);
 
 }  // namespace soma::studies::gf12::SOMA_UNITY_ID

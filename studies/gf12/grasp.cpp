@@ -28,10 +28,6 @@ const double kTol = Tolerance<double>::identity(64);
 double uni(std::mt19937_64& g, double lo = -1, double hi = 1) {
   return std::uniform_real_distribution<double>(lo, hi)(g);
 }
-bool recordFails(Context& c, const std::string& name, const std::string& erratum, double residual, double tol) {
-  return c.record(name + " [as printed]", "fails (erratum " + erratum + ")", "residual " + toString(residual, 6),
-                  residual, tol, std::isfinite(residual) && residual > tol);
-}
 std::string yesNo(bool b) { return b ? "yes" : "no"; }
 
 /// A surface as (u, v) ∈ [−1, 1]² ↦ (point, inward normal, not necessarily unit).
@@ -257,7 +253,7 @@ void curvedRegions(Context& c) {
     printedWrong += printed != feasible;
   }
   c.checkEqual("corrected region (v_z < 0, or v_z = 0 and q < 0) = simulated Φ(e^{−εs}·0) < 0, ε = 1e-4", n, agree);
-  recordFails(c, "feasible set = {v_z < 0} ∩ {k_x v_x² + k_y v_y² − ω_x v_y + ω_y v_x ≤ 0} (misclassified of " +
+  c.checkPrintedFails("feasible set = {v_z < 0} ∩ {k_x v_x² + k_y v_y² − ω_x v_y + ω_y v_x ≤ 0} (misclassified of " +
                      std::to_string(n) + ")", "E12.3", double(printedWrong), 0.0);
   // the extremes: flat contact (k = 0) reduces to the polyhedral case; a saddle separates along one slide
   const T slideY(V3::Zero(), V3(0, 1, 0)), slideX(V3::Zero(), V3(1, 0, 0));
@@ -299,7 +295,7 @@ void frictionCone(Context& c) {
   c.checkResidual("standard form (0,0,0, γF cos θ, γF sin θ, F): zero moment",
                   standardFrictionWrench<double>(3, 0.4, 1.1).moment().norm(), 0.0);
   c.checkEqual("μ = 2.5 (rubber on rubber) accepted", "accepted", "accepted");
-  recordFails(c, "'μ is a number between 0 and 1' — rubber on dry steel/rubber has μ ≈ 1–2.5 (distance above 1)", "E12.4",
+  c.checkPrintedFails("'μ is a number between 0 and 1' — rubber on dry steel/rubber has μ ≈ 1–2.5 (distance above 1)", "E12.4",
               2.5 - 1.0, 0.0);
   c.checkEqual("μ = 0: the cone is a single line (rank of the edge wrenches)", 1,
                wrenchSpan<double>(frictionConeEdges<double>(V3(0.1, 0.2, 0.3), V3::UnitZ(), 0.0, 8)).rank);
@@ -389,7 +385,7 @@ void dualFrictionCone(Context& c) {
     ++n;
   }
   c.checkEqual("corrected dual {ω free, v_z ≥ μ|v_t|} = {s : 𝒲(s) ≥ 0 ∀ 𝒲 in the cone} (2000 random s)", n, agree);
-  recordFails(c, "dual = {(0, 0, 0, λl cos φ, λl sin φ, l)} only: members of the true dual it misses (of 2000)", "E12.2",
+  c.checkPrintedFails("dual = {(0, 0, 0, λl cos φ, λl sin φ, l)} only: members of the true dual it misses (of 2000)", "E12.2",
               double(missed), 0.0);
   // where it matters: two antipodal fingers on a sphere. Printed duals: translations only, and they meet in {0}
   // (v_x ≥ μ|v_t| and −v_x ≥ μ|v_t|), which would declare the grasp force closed.
@@ -475,23 +471,20 @@ void polyhedral(Context& c) {
 
 }  // namespace
 
-#define GF12(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-GF12("GF-12.5-force-closure-frictionless", "Force closure: the contact normals span se*(3) (rank 6, ≥ 6 fingers)", "GF §12.5", forceClosure);
-GF12("GF-12.5-ungrippable-surfaces", "Reuleaux surfaces cannot be force-closed without friction (normals in a linear complex)",
+SOMA_STUDY_DOUBLE("GF-12.5-force-closure-frictionless", "Force closure: the contact normals span se*(3) (rank 6, ≥ 6 fingers)", "GF §12.5", forceClosure);
+SOMA_STUDY_DOUBLE("GF-12.5-ungrippable-surfaces", "Reuleaux surfaces cannot be force-closed without friction (normals in a linear complex)",
      "GF §12.5", ungrippable);
-GF12("GF-12.5-positive-grasp-seven", "Push-only frictionless grasps need seven fingers", "GF §12.5", positiveSeven);
-GF12("GF-12.5-form-closure", "Form closure = force closure for point fingers on polyhedra (dual linear programs)", "GF §12.5",
+SOMA_STUDY_DOUBLE("GF-12.5-positive-grasp-seven", "Push-only frictionless grasps need seven fingers", "GF §12.5", positiveSeven);
+SOMA_STUDY_DOUBLE("GF-12.5-form-closure", "Form closure = force closure for point fingers on polyhedra (dual linear programs)", "GF §12.5",
      formClosureStudy);
-GF12("GF-12.5-second-order-contact", "Second-order contact: v_z = 0 and k_x v_x² + k_y v_y² − ω_x v_y + ω_y v_x = 0", "GF §12.5",
+SOMA_STUDY_DOUBLE("GF-12.5-second-order-contact", "Second-order contact: v_z = 0 and k_x v_x² + k_y v_y² − ω_x v_y + ω_y v_x = 0", "GF §12.5",
      secondOrder);
-GF12("GF-12.5-curved-feasible-regions", "Feasible object velocities at a curved contact (erratum E12.3)", "GF §12.5", curvedRegions);
-GF12("GF-12.6-friction-cone", "The friction cone: semi-angle atan μ, lines in the α-plane (erratum E12.4)", "GF §12.6", frictionCone);
-GF12("GF-12.6-two-fingers-insufficient", "Two friction cones never span se*(3); three fingers do", "GF §12.6", twoFingers);
-GF12("GF-12.6-convex-cone-duality", "Dual cones: inclusion reverses, (C₁ + C₂)* = C₁* ∩ C₂*", "GF §12.6", coneDuality);
-GF12("GF-12.6-dual-friction-cone", "The dual of the friction cone leaves ω free (erratum E12.2)", "GF §12.6", dualFrictionCone);
-GF12("GF-12.6-planar-two-finger-grasp", "Planar two-finger grasps: each contact inside the other's cone", "GF §12.6", planarTwoFinger);
-GF12("GF-12.6-polyhedral-approximation", "Linearised friction cones: the LP answer converges like 1/k²", "GF §12.6", polyhedral);
-#undef GF12
+SOMA_STUDY_DOUBLE("GF-12.5-curved-feasible-regions", "Feasible object velocities at a curved contact (erratum E12.3)", "GF §12.5", curvedRegions);
+SOMA_STUDY_DOUBLE("GF-12.6-friction-cone", "The friction cone: semi-angle atan μ, lines in the α-plane (erratum E12.4)", "GF §12.6", frictionCone);
+SOMA_STUDY_DOUBLE("GF-12.6-two-fingers-insufficient", "Two friction cones never span se*(3); three fingers do", "GF §12.6", twoFingers);
+SOMA_STUDY_DOUBLE("GF-12.6-convex-cone-duality", "Dual cones: inclusion reverses, (C₁ + C₂)* = C₁* ∩ C₂*", "GF §12.6", coneDuality);
+SOMA_STUDY_DOUBLE("GF-12.6-dual-friction-cone", "The dual of the friction cone leaves ω free (erratum E12.2)", "GF §12.6", dualFrictionCone);
+SOMA_STUDY_DOUBLE("GF-12.6-planar-two-finger-grasp", "Planar two-finger grasps: each contact inside the other's cone", "GF §12.6", planarTwoFinger);
+SOMA_STUDY_DOUBLE("GF-12.6-polyhedral-approximation", "Linearised friction cones: the LP answer converges like 1/k²", "GF §12.6", polyhedral);
 
 }  // namespace soma::studies::gf12::SOMA_UNITY_ID

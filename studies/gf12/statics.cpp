@@ -35,10 +35,6 @@ V6 rv6(std::mt19937_64& g) {
   return v;
 }
 template <class M> long long detail_rank(const M& m) { return wrenchSpan<double>(WrenchSet<double>(m)).rank; }
-bool recordFails(Context& c, const std::string& name, const std::string& erratum, double residual, double tol) {
-  return c.record(name + " [as printed]", "fails (erratum " + erratum + ")", "residual " + toString(residual, 6),
-                  residual, tol, std::isfinite(residual) && residual > tol);
-}
 /// The displacement screw of the tool between two poses, to first order: log(T₁ T₀⁻¹) (spatial).
 V6 spatialDisplacement(const SE3<double>& t0, const SE3<double>& t1) { return (t1 * t0.inverse()).log().coeffs(); }
 
@@ -156,7 +152,7 @@ void wristSensor(Context& c) {
   }
   c.checkResidual("Σ 𝒲_i (from the beam geometry) = the printed total 𝒲_tot (100 random w)", book, 1e-12);
   c.checkResidual("Σ 𝒲_i = corrected resolved force matrix · w, row 2 = (0, −l, 0, 0, 0, +l, 0, 0)", corr, 1e-12);
-  recordFails(c, "resolved force matrix row 2 = (0, −l, 0, 0, 0, −l, 0, 0) · w = 𝒲_tot", "E12.1", printed, 1e-12);
+  c.checkPrintedFails("resolved force matrix row 2 = (0, −l, 0, 0, 0, −l, 0, 0) · w = 𝒲_tot", "E12.1", printed, 1e-12);
   c.checkResidual("calibration: the minimum-norm gauge signals for a wrench reproduce it", calib, 1e-10);
   c.checkEqual("rank of the resolved force matrix, l = 35 mm", 6, detail_rank(resolvedForceMatrix<double>(l)));
   c.checkEqual("rank at l = 0 (moments unmeasurable)", 3, detail_rank(resolvedForceMatrix<double>(0.0)));
@@ -261,18 +257,15 @@ void stiffness(Context& c) {
 
 }  // namespace
 
-#define GF12(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-GF12("GF-12.1-coscrew-pairing", "Co-screws are linear functionals on se(3): the pairing 𝓕(s) = Mᵀω + pᵀv", "GF §12.1", pairing);
-GF12("GF-12.1-coadjoint-representation", "Co-screws move by the coadjoint [[R, TR], [0, R]] = Ad⁻ᵀ, keeping the pairing",
+SOMA_STUDY_DOUBLE("GF-12.1-coscrew-pairing", "Co-screws are linear functionals on se(3): the pairing 𝓕(s) = Mᵀω + pᵀv", "GF §12.1", pairing);
+SOMA_STUDY_DOUBLE("GF-12.1-coadjoint-representation", "Co-screws move by the coadjoint [[R, TR], [0, R]] = Ad⁻ᵀ, keeping the pairing",
      "GF §12.1", coadjoint);
-GF12("GF-12.2-wrench-of-a-force", "The wrench of a force (r × F, F): power, line of action, equilibrium", "GF §12.2", wrenchOfForce);
-GF12("GF-12.2-couple-pure-torque", "A couple is a pure torque (2 r × F, 0)", "GF §12.2", couple);
-GF12("GF-12.2-wrench-pitch-axis", "Pitch τ·F/F·F and axis of a wrench; infinite pitch for F = 0", "GF §12.2", pitchAxis);
-GF12("GF-12.3-wrist-force-sensor", "The four-beam wrist force sensor and its resolved force matrix (erratum E12.1)",
+SOMA_STUDY_DOUBLE("GF-12.2-wrench-of-a-force", "The wrench of a force (r × F, F): power, line of action, equilibrium", "GF §12.2", wrenchOfForce);
+SOMA_STUDY_DOUBLE("GF-12.2-couple-pure-torque", "A couple is a pure torque (2 r × F, 0)", "GF §12.2", couple);
+SOMA_STUDY_DOUBLE("GF-12.2-wrench-pitch-axis", "Pitch τ·F/F·F and axis of a wrench; infinite pitch for F = 0", "GF §12.2", pitchAxis);
+SOMA_STUDY_DOUBLE("GF-12.3-wrist-force-sensor", "The four-beam wrist force sensor and its resolved force matrix (erratum E12.1)",
      "GF §12.3", wristSensor);
-GF12("GF-12.4-joint-torques-to-wrench", "𝒲_totᵀ J = (w₁…w₆): the end-effector wrench of a PUMA 560", "GF §12.4", jointTorques);
-GF12("GF-12.4-stiffness-compliance", "Stiffness (J⁻¹)ᵀKJ⁻¹, compliance JK⁻¹Jᵀ and the eigenscrews", "GF §12.4", stiffness);
-#undef GF12
+SOMA_STUDY_DOUBLE("GF-12.4-joint-torques-to-wrench", "𝒲_totᵀ J = (w₁…w₆): the end-effector wrench of a PUMA 560", "GF §12.4", jointTorques);
+SOMA_STUDY_DOUBLE("GF-12.4-stiffness-compliance", "Stiffness (J⁻¹)ᵀKJ⁻¹, compliance JK⁻¹Jᵀ and the eigenscrews", "GF §12.4", stiffness);
 
 }  // namespace soma::studies::gf12::SOMA_UNITY_ID

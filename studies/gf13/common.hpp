@@ -118,10 +118,6 @@ template <class F> auto dmat(F&& f, double d = 1e-3) {
   return R(((f(-2 * d) - f(2 * d)) / 12 + (f(d) - f(-d)) * (2.0 / 3.0)) / d);
 }
 
-inline bool recordFails(Context& c, const std::string& name, const std::string& erratum, double residual, double tol) {
-  return c.record(name + " [as printed]", "fails (erratum " + erratum + ")", "residual " + toString(residual, 6),
-                  residual, tol, std::isfinite(residual) && residual > tol);
-}
 inline double maxAbs(const DV& v) { return v.cwiseAbs().maxCoeff(); }
 inline double maxAbs(const DM& v) { return v.cwiseAbs().maxCoeff(); }
 

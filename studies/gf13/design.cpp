@@ -48,7 +48,7 @@ void decoupling(Context& ctx) {
   // control: c.o.m. off the axis, or axes not perpendicular: A varies
   const SerialDynamics<double> off = twoR(s1, s2, l1, SpatialInertia<double>(1.7, V3(0.1, 0, 0.4), M3(V3(0.2, 0.2, 0.05).asDiagonal())));
   const SerialDynamics<double> tilt = twoR(lineScrew(V3(1, 0, 1).normalized(), V3::Zero()), s2, l1, l2);
-  recordFails(ctx, "control: c.o.m. 0.1 m off s₂ — A constant", "— (control)", aVariation(off, 1), 1e-6);
+  ctx.checkPrintedFails("control: c.o.m. 0.1 m off s₂ — A constant", "— (control)", aVariation(off, 1), 1e-6);
   ctx.note("With s₁ tilted 45° from s₂ (same symmetric link 2) A is still independent of θ₂ (variation " +
            toString(aVariation(tilt, 1), 3) + ") but no longer diagonal: A₁₂ = s₁ᵀN₂s₂ = " +
            toString(tilt.massMatrix(DV::Zero(2))(0, 1), 3) + " against " + toString(r.massMatrix(DV::Zero(2))(0, 1), 3) +
@@ -145,16 +145,16 @@ void ignorable2R(Context& ctx) {
   });
   ctx.checkNear("generic N₂: ∂A₁₁/∂θ₂ = −2s₁ᵀN₂[s₂, s₁] (vs differences)", fd11,
                 -2 * c.screws[0].dot(c.inertias[1] * br(c.screws[1], c.screws[0])), 1e-12);
-  recordFails(ctx, "generic N₂: θ₂ ignorable", "— (control)", dAdTheta2(gen), 1e-6);
+  ctx.checkPrintedFails("generic N₂: θ₂ ignorable", "— (control)", dAdTheta2(gen), 1e-6);
   // the six coefficient equations: their solution family is exactly 'symmetric about s₂, c on s₂'
   const SpatialInertia<double> breakI(1.3, V3(0.4, 0, 0), M3(V3(0.05, 0.2, 0.25).asDiagonal()));  // I₂₂ ≠ I₃₃
   const SpatialInertia<double> breakC(1.3, V3(0.4, 0.1, 0), M3(V3(0.05, 0.2, 0.2).asDiagonal()));  // c_y ≠ 0
-  recordFails(ctx, "I₂₂ ≠ I₃₃ (violates (I₃₃ − I₂₂)sin²φ = 0): θ₂ ignorable", "— (control)", dAdTheta2(twoR(s1, s2, l1, breakI)), 1e-6);
-  recordFails(ctx, "c_y ≠ 0 (violates −I₁₃cosφ sinφ + mlc_y = 0): θ₂ ignorable", "— (control)", dAdTheta2(twoR(s1, s2, l1, breakC)), 1e-6);
+  ctx.checkPrintedFails("I₂₂ ≠ I₃₃ (violates (I₃₃ − I₂₂)sin²φ = 0): θ₂ ignorable", "— (control)", dAdTheta2(twoR(s1, s2, l1, breakI)), 1e-6);
+  ctx.checkPrintedFails("c_y ≠ 0 (violates −I₁₃cosφ sinφ + mlc_y = 0): θ₂ ignorable", "— (control)", dAdTheta2(twoR(s1, s2, l1, breakC)), 1e-6);
   // the printed general N₂ (line 8488): last row (mc_x, −mc_x, 0, …) is not symmetric with column 6
   const double m = 1.3, cx = 0.4, cy = -0.2;
   const double printedRow6[3] = {m * cx, -m * cx, 0}, column6[3] = {m * cy, -m * cx, 0};
-  recordFails(ctx, "general N₂ as printed is symmetric (N₆₁ = N₁₆)", "18", abs(printedRow6[0] - column6[0]), 1e-12);
+  ctx.checkPrintedFails("general N₂ as printed is symmetric (N₆₁ = N₁₆)", "18", abs(printedRow6[0] - column6[0]), 1e-12);
   ctx.note("θ₁ is always ignorable (nothing depends on it). Line 8463 writes N_s for N₂ (erratum 19).");
 }
 
@@ -198,7 +198,7 @@ void ignorableIIAIIB(Context& ctx) {
     for (const V6& b : basis) se2 = std::max(se2, abs(a.dot(QB * b)));
   ctx.checkResidual("equivalently s_iᵀQs_j = 0 over se(2)", se2, 1e-15);
   const SpatialInertia<double> lB2(any.mass(), V3(0.35, 0.1, 0), any.inertiaAboutCentre());
-  recordFails(ctx, "IIB with c.o.m. 0.1 m off s₂: θ₂ ignorable", "— (control)", dAdTheta2(twoR(p1, s2, l1, lB2)), 1e-6);
+  ctx.checkPrintedFails("IIB with c.o.m. 0.1 m off s₂: θ₂ ignorable", "— (control)", dAdTheta2(twoR(p1, s2, l1, lB2)), 1e-6);
   ctx.note("Lines 8518, 8530 write s_i, s_i ∈ so(3) and s_iᵀ(…)s_i for s_i, s_j (erratum 19).");
 }
 
@@ -229,7 +229,7 @@ void ignorable3R(Context& ctx) {
   const SpatialInertia<double> l2off(m2, V3(1 - m3 * e / m2 + 0.1, 0, 0.1), l2b.inertiaAboutCentre());
   const SerialDynamics<double> bad({SE3Tangent<double>(s1), SE3Tangent<double>(s2), SE3Tangent<double>(s3)},
                                    {randomBody(g), l2off, l3}, 0);
-  recordFails(ctx, "control: composite c.o.m. 0.1 m off the joint-2 axis: θ₂ ignorable", "— (control)", aVariation(bad, 1), 1e-6);
+  ctx.checkPrintedFails("control: composite c.o.m. 0.1 m off the joint-2 axis: θ₂ ignorable", "— (control)", aVariation(bad, 1), 1e-6);
   // the brackets of the skew case: [s₂, s] = (0, I₁₁ sinφ k), [s₂, [s₂, s]] = (0, −I₁₁ sinφ (sinφ i + cosφ j))
   const double phi = 0.8, l = 0.4, I11 = 0.07;
   const V6 t2 = skewS1(phi, l);
@@ -392,11 +392,11 @@ void gaussian(Context& ctx) {
   };
   ctx.checkNear("Δ' = 2(s₁ᵀN₂[s₁,s₂])(s₂ᵀN₂s₂) − 2(s₂ᵀN₂[s₁,s₂])(s₁ᵀN₂s₂) vs differences", Dp, DpBook, 1e-12 * std::max(1.0, abs(Dp)));
   ctx.checkNear("Δ'' with coefficients 2, 2 (corrected, erratum 12) vs differences", Dpp, DppBook(2), 1e-11 * std::max(1.0, abs(Dpp)));
-  recordFails(ctx, "Δ'' with coefficients 4, 4 (line 8691)", "12", abs(DppBook(4) - Dpp) / std::max(1.0, abs(Dpp)), 1e-6);
+  ctx.checkPrintedFails("Δ'' with coefficients 4, 4 (line 8691)", "12", abs(DppBook(4) - Dpp) / std::max(1.0, abs(Dpp)), 1e-6);
   const double Kc = (Ev * Dp - 2 * D * Evv) / (4 * D * D);
   const double Kp = gg / 4 * (2 * D * Dpp - 3 * Dp * Dp) / (D * D);
   ctx.checkNear("K(A) = (A₁₁'Δ' − 2ΔA₁₁'')/(4Δ²) (corrected) = Brioschi curvature of A", Kb, Kc, 1e-10 * std::max(1.0, abs(Kb)));
-  recordFails(ctx, "K = (A₂₂/4)(2ΔΔ'' − 3Δ'²)/Δ² (line 8677) vs Brioschi K(A)", "11", abs(Kp - Kb) / std::max(1e-12, abs(Kb)), 1e-6);
+  ctx.checkPrintedFails("K = (A₂₂/4)(2ΔΔ'' − 3Δ'²)/Δ² (line 8677) vs Brioschi K(A)", "11", abs(Kp - Kb) / std::max(1e-12, abs(Kb)), 1e-6);
   // the printed K is the curvature of A⁻¹
   auto Ai = [&](const Q& u) {
     DynVector<Q> a(2);
@@ -611,16 +611,13 @@ void geodesics2R(Context& ctx) {
 }
 }  // namespace
 
-#define GF13(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-GF13("GF-13.6.1-decoupling-2R", "A decoupled 2R: constant diagonal A, B = 0; impossible for three joints", "GF §13.6.1", decoupling);
-GF13("GF-13.6.1-quadratic-complex-kummer", "The quadratic line complex of revolute s₁ and its Kummer surface (erratum 23)", "GF §13.6.1", kummer);
-GF13("GF-13.6.2-ignorable-2R-IA", "θ₂ ignorable for skew axes: link 2 symmetric about s₂ (erratum 18)", "GF §13.6.2", ignorable2R);
-GF13("GF-13.6.2-ignorable-IIA-IIB", "θ₂ ignorable for intersecting (IIA) and parallel (IIB) axes", "GF §13.6.2", ignorableIIAIIB);
-GF13("GF-13.6.2-ignorable-3R", "θ₂ and θ₃ ignorable in a 3R: s₁ ∥ s₂, composite c.o.m. on s₂", "GF §13.6.2", ignorable3R);
-GF13("GF-13.6.3-flat-coordinates", "Flat coordinates φ(θ): φ̈ = K⁻ᵀτ; B = K_li∂_kK_lj (erratum 20)", "GF §13.6.3", flat);
-GF13("GF-13.6.3-gaussian-curvature-2R", "Gaussian curvature of a 2R inertia metric (errata 11, 12)", "GF §13.6.3", gaussian);
-GF13("GF-13.6.3-geodesics-2R", "Derived figure: free motion = geodesics of A; Jacobi spreading by K", "GF §13.4.2, §13.6.3", geodesics2R);
-#undef GF13
+SOMA_STUDY_DOUBLE("GF-13.6.1-decoupling-2R", "A decoupled 2R: constant diagonal A, B = 0; impossible for three joints", "GF §13.6.1", decoupling);
+SOMA_STUDY_DOUBLE("GF-13.6.1-quadratic-complex-kummer", "The quadratic line complex of revolute s₁ and its Kummer surface (erratum 23)", "GF §13.6.1", kummer);
+SOMA_STUDY_DOUBLE("GF-13.6.2-ignorable-2R-IA", "θ₂ ignorable for skew axes: link 2 symmetric about s₂ (erratum 18)", "GF §13.6.2", ignorable2R);
+SOMA_STUDY_DOUBLE("GF-13.6.2-ignorable-IIA-IIB", "θ₂ ignorable for intersecting (IIA) and parallel (IIB) axes", "GF §13.6.2", ignorableIIAIIB);
+SOMA_STUDY_DOUBLE("GF-13.6.2-ignorable-3R", "θ₂ and θ₃ ignorable in a 3R: s₁ ∥ s₂, composite c.o.m. on s₂", "GF §13.6.2", ignorable3R);
+SOMA_STUDY_DOUBLE("GF-13.6.3-flat-coordinates", "Flat coordinates φ(θ): φ̈ = K⁻ᵀτ; B = K_li∂_kK_lj (erratum 20)", "GF §13.6.3", flat);
+SOMA_STUDY_DOUBLE("GF-13.6.3-gaussian-curvature-2R", "Gaussian curvature of a 2R inertia metric (errata 11, 12)", "GF §13.6.3", gaussian);
+SOMA_STUDY_DOUBLE("GF-13.6.3-geodesics-2R", "Derived figure: free motion = geodesics of A; Jacobi spreading by K", "GF §13.4.2, §13.6.3", geodesics2R);
 
 }  // namespace soma::studies::gf13::SOMA_UNITY_ID

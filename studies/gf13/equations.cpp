@@ -211,7 +211,7 @@ void coriolisB(Context& ctx) {
   }
   ctx.checkResidual("B_ijk (corrected) = ½(∂_kA_ij + ∂_jA_ik − ∂_iA_jk), derivatives in __float128 (10 random 5R, relative)", chr, 1e-13);
   ctx.checkResidual("B_ijk θ̇_jθ̇_k = RNEA(θ, θ̇, 0) − C (relative)", rn, 1e-13);
-  recordFails(ctx, "B with third terms [s_k, s_i] (j ≤ k), [s_i, s_k] (k < j) (lines 7889, 7893): B θ̇θ̇ vs RNEA", "2", printed, 1e-6);
+  ctx.checkPrintedFails("B with third terms [s_k, s_i] (j ≤ k), [s_i, s_k] (k < j) (lines 7889, 7893): B θ̇θ̇ vs RNEA", "2", printed, 1e-6);
 }
 
 void gravityC(Context& ctx) {
@@ -233,7 +233,7 @@ void gravityC(Context& ctx) {
   }
   ctx.checkResidual("C_i = −s_iᵀ(N_i + … + N_n)g = RNEA(θ, 0, 0) (20 random 6R, relative)", rn, 1e-13);
   ctx.checkResidual("C_i = ∂E_P/∂θ_i, E_P = Σm_i g z_i (differences in __float128)", fd, 1e-13);
-  recordFails(ctx, "C_i = +s_iᵀ(N_i + … + N_n)g (line 7899) vs RNEA", "1", printed, 1e-6);
+  ctx.checkPrintedFails("C_i = +s_iᵀ(N_i + … + N_n)g (line 7899) vs RNEA", "1", printed, 1e-6);
   // g = 0 hides the error
   const SerialDynamics<double> r0 = randomRobot(g, 6, -1, 0.0);
   const DV th = rjoints(g, 6);
@@ -265,7 +265,7 @@ void payload(Context& ctx) {
   ctx.checkResidual("A' − A = A^p, A^p_ij = s_iᵀN_ps_j (20 random 6R + payload, relative)", ea, 1e-13);
   ctx.checkResidual("B' − B = B^p (B with N̄_x → N_p, lines 7911–7917)", eb, 1e-13);
   ctx.checkResidual("C' − C = C^p = −s_iᵀN_p g (corrected)", ec, 1e-13);
-  recordFails(ctx, "C^p_i = s_iᵀN_p g (line 7921)", "1", printed, 1e-6);
+  ctx.checkPrintedFails("C^p_i = s_iᵀN_p g (line 7921)", "1", printed, 1e-6);
   ctx.note("The payload B^p (lines 7913/7917) prints the third brackets correctly; the general B (lines 7889/7893) "
            "does not (erratum 2). Line 7917 has OCR damage (`rac`, erratum 21).");
 }
@@ -308,18 +308,15 @@ void rnea(Context& ctx) {
 
 }  // namespace
 
-#define GF13(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-GF13("GF-13.2.1-time-derivatives", "ṡ = [z, s], 𝓜̇ = {z, 𝓜}, Ṅ = −ad(z)ᵀN − N ad(z) in the fixed frame", "GF §13.2.1", timeDerivatives);
-GF13("GF-13.2.1-single-body-eom", "N q̈ + {q̇, N q̇} = 𝒲: a free body keeps N q̇ and E_K", "GF §13.2.1", singleBody);
-GF13("GF-13.2.2-serial-link-equations", "Link equations summed and paired with s_i give τ_i (line 7843)", "GF §13.2.2", linkEquations);
-GF13("GF-13.2.2-gravity-wrench", "𝒢_i = N_i g and the spatial formula (line 7861)", "GF §13.2.2", gravityWrench);
-GF13("GF-13.2.2-link-accelerations", "q̈_i = Σθ̈_js_j + Σθ̇_kθ̇_l[s_k, s_l] (erratum 15)", "GF §13.2.2", linkAccelerations);
-GF13("GF-13.2.2-generalised-inertia-A", "A_ij = s_iᵀN̄_max(i,j)s_j: E_K, SPD, PUMA 560 at a singularity", "GF §13.2.2", generalisedInertia);
-GF13("GF-13.2.2-coriolis-B", "B_ijk = Christoffel symbols of A (erratum 2)", "GF §13.2.2", coriolisB);
-GF13("GF-13.2.2-gravity-C", "C_i = −s_iᵀN̄_i g = ∂E_P/∂θ_i (erratum 1)", "GF §13.2.2", gravityC);
-GF13("GF-13.2.3-payload", "Payload increments A^p, B^p, C^p (erratum 1)", "GF §13.2.3", payload);
-GF13("GF-13.3-recursive-newton-euler", "The recursive Newton–Euler algorithm in home coordinates", "GF §13.3", rnea);
-#undef GF13
+SOMA_STUDY_DOUBLE("GF-13.2.1-time-derivatives", "ṡ = [z, s], 𝓜̇ = {z, 𝓜}, Ṅ = −ad(z)ᵀN − N ad(z) in the fixed frame", "GF §13.2.1", timeDerivatives);
+SOMA_STUDY_DOUBLE("GF-13.2.1-single-body-eom", "N q̈ + {q̇, N q̇} = 𝒲: a free body keeps N q̇ and E_K", "GF §13.2.1", singleBody);
+SOMA_STUDY_DOUBLE("GF-13.2.2-serial-link-equations", "Link equations summed and paired with s_i give τ_i (line 7843)", "GF §13.2.2", linkEquations);
+SOMA_STUDY_DOUBLE("GF-13.2.2-gravity-wrench", "𝒢_i = N_i g and the spatial formula (line 7861)", "GF §13.2.2", gravityWrench);
+SOMA_STUDY_DOUBLE("GF-13.2.2-link-accelerations", "q̈_i = Σθ̈_js_j + Σθ̇_kθ̇_l[s_k, s_l] (erratum 15)", "GF §13.2.2", linkAccelerations);
+SOMA_STUDY_DOUBLE("GF-13.2.2-generalised-inertia-A", "A_ij = s_iᵀN̄_max(i,j)s_j: E_K, SPD, PUMA 560 at a singularity", "GF §13.2.2", generalisedInertia);
+SOMA_STUDY_DOUBLE("GF-13.2.2-coriolis-B", "B_ijk = Christoffel symbols of A (erratum 2)", "GF §13.2.2", coriolisB);
+SOMA_STUDY_DOUBLE("GF-13.2.2-gravity-C", "C_i = −s_iᵀN̄_i g = ∂E_P/∂θ_i (erratum 1)", "GF §13.2.2", gravityC);
+SOMA_STUDY_DOUBLE("GF-13.2.3-payload", "Payload increments A^p, B^p, C^p (erratum 1)", "GF §13.2.3", payload);
+SOMA_STUDY_DOUBLE("GF-13.3-recursive-newton-euler", "The recursive Newton–Euler algorithm in home coordinates", "GF §13.3", rnea);
 
 }  // namespace soma::studies::gf13::SOMA_UNITY_ID

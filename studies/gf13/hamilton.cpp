@@ -20,7 +20,7 @@ void hamiltonian(Context& ctx) {
         bij(i) += B[std::size_t(i)](j, k) * thd(j) * thd(k);
       }
   ctx.checkResidual("½∂_iA_jkθ̇_jθ̇_k = B_jikθ̇_jθ̇_k (relative)", maxAbs(DV(gk - bji)) / maxAbs(gk), 1e-13);
-  recordFails(ctx, "π̇_i = B_ijkθ̇_iθ̇_k − C_i + τ_i (line 8289), read as B_ijkθ̇_jθ̇_k", "10", maxAbs(DV(gk - bij)) / maxAbs(gk), 1e-6);
+  ctx.checkPrintedFails("π̇_i = B_ijkθ̇_iθ̇_k − C_i + τ_i (line 8289), read as B_ijkθ̇_jθ̇_k", "10", maxAbs(DV(gk - bij)) / maxAbs(gk), 1e-6);
   // Hamilton (RK4 on (θ, π)) and Lagrange (RK4 on (θ, θ̇)) from the same state agree
   JointState<double> y{th, thd};
   DV q = th, p = r.momentum(th, thd);
@@ -92,7 +92,7 @@ void canonical(Context& ctx) {
   }
   // nested 4th-order differences (d = 1e-3): error ≈ d⁴·|f⁽⁵⁾| ≈ 1e-11 per level
   ctx.checkResidual("point transformation φ(θ), π' = K⁻ᵀπ: J E Jᵀ = E (10 random points)", worst, 1e-8);
-  recordFails(ctx, "non-canonical π' = Kπ (control): J E Jᵀ = E", "— (control, not an erratum)", bad, 1e-8);
+  ctx.checkPrintedFails("non-canonical π' = Kπ (control): J E Jᵀ = E", "— (control, not an erratum)", bad, 1e-8);
 }
 
 void poisson(Context& ctx) {
@@ -164,11 +164,8 @@ void poisson(Context& ctx) {
 
 }  // namespace
 
-#define GF13(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-GF13("GF-13.5-hamiltonian", "Hamilton's equations π̇_i = B_jikθ̇_jθ̇_k − C_i + τ_i (erratum 10)", "GF §13.5", hamiltonian);
-GF13("GF-13.5-canonical-symplectic", "Point transformations with π' = K⁻ᵀπ are canonical: JEJᵀ = E", "GF §13.5", canonical);
-GF13("GF-13.5-poisson-bracket", "Poisson brackets: Jacobi identity, [θ, h], [π, h], dh/dt = θ̇ᵀτ (erratum 10)", "GF §13.5", poisson);
-#undef GF13
+SOMA_STUDY_DOUBLE("GF-13.5-hamiltonian", "Hamilton's equations π̇_i = B_jikθ̇_jθ̇_k − C_i + τ_i (erratum 10)", "GF §13.5", hamiltonian);
+SOMA_STUDY_DOUBLE("GF-13.5-canonical-symplectic", "Point transformations with π' = K⁻ᵀπ are canonical: JEJᵀ = E", "GF §13.5", canonical);
+SOMA_STUDY_DOUBLE("GF-13.5-poisson-bracket", "Poisson brackets: Jacobi identity, [θ, h], [π, h], dh/dt = θ̇ᵀτ (erratum 10)", "GF §13.5", poisson);
 
 }  // namespace soma::studies::gf13::SOMA_UNITY_ID

@@ -282,7 +282,7 @@ void principal(Context& ctx) {
   ctx.checkResidual("principal screws mutually reciprocal: s_jᵀQ₀s_i = 0 (corrected, erratum 13)", recip, 1e-12);
   ctx.checkResidual("and conjugate: s_jᵀNs_i = 0", conj, 1e-12);
   ctx.checkResidual("{s, Ns} = 0 for a principal screw", self, 1e-12);
-  recordFails(ctx, "0 = (λ_i − λ_j) s_iᵀQ₀s_i (line 7737)", "13", printedMin, 1e-6);
+  ctx.checkPrintedFails("0 = (λ_i − λ_j) s_iᵀQ₀s_i (line 7737)", "13", printedMin, 1e-6);
   ctx.note("Line 7737 prints s_iᵀQ₀s_i; that is 2p_i|ω|², never zero for a principal screw (the smallest "
            "|s_iᵀQ₀s_i| over 300 unit principal screws is " + toString(printedMin, 3) + "). With s_jᵀQ₀s_i it holds.");
 }
@@ -321,22 +321,19 @@ void commutators(Context& ctx) {
 
 }  // namespace
 
-#define GF13(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-GF13("GF-13.1-kinetic-energy-pairing", "𝓜ᵀs = j·ω + p·v = 2E_K (point-mass clouds)", "GF §13.1", pairing);
-GF13("GF-13.1-spatial-inertia-matrix", "N = [[I, mC], [mCᵀ, mI₃]] from particles; positive definite; extremes", "GF §13.1",
+SOMA_STUDY_DOUBLE("GF-13.1-kinetic-energy-pairing", "𝓜ᵀs = j·ω + p·v = 2E_K (point-mass clouds)", "GF §13.1", pairing);
+SOMA_STUDY_DOUBLE("GF-13.1-spatial-inertia-matrix", "N = [[I, mC], [mCᵀ, mI₃]] from particles; positive definite; extremes", "GF §13.1",
      inertiaMatrix);
-GF13("GF-13.1-inertia-transformation", "N' = H⁻ᵀNH⁻¹, the skew-axis (parallel-axis) theorem", "GF §13.1", transformation);
-GF13("GF-13.1-inertia-diagonalisation", "c.o.m. and principal axes make N = diag(d₁, d₂, d₃, m, m, m)", "GF §13.1",
+SOMA_STUDY_DOUBLE("GF-13.1-inertia-transformation", "N' = H⁻ᵀNH⁻¹, the skew-axis (parallel-axis) theorem", "GF §13.1", transformation);
+SOMA_STUDY_DOUBLE("GF-13.1-inertia-diagonalisation", "c.o.m. and principal axes make N = diag(d₁, d₂, d₃, m, m, m)", "GF §13.1",
      diagonalisation);
-GF13("GF-13.1-conjugate-screws", "Conjugate screws s₁ᵀNs₂ = 0 and the group MᵀNM = N", "GF §13.1", conjugate);
-GF13("GF-13.1-coadjoint-lie-algebra-action", "{s, 𝓜} = −ad(s)ᵀ𝓜 and its two identities", "GF §13.1", coadjointAction);
-GF13("GF-13.1-same-line-of-action", "A screw and a co-screw on one line: {s, 𝓜} = 0 (converse needs finite pitch)",
+SOMA_STUDY_DOUBLE("GF-13.1-conjugate-screws", "Conjugate screws s₁ᵀNs₂ = 0 and the group MᵀNM = N", "GF §13.1", conjugate);
+SOMA_STUDY_DOUBLE("GF-13.1-coadjoint-lie-algebra-action", "{s, 𝓜} = −ad(s)ᵀ𝓜 and its two identities", "GF §13.1", coadjointAction);
+SOMA_STUDY_DOUBLE("GF-13.1-same-line-of-action", "A screw and a co-screw on one line: {s, 𝓜} = 0 (converse needs finite pitch)",
      "GF §13.1", sameLine);
-GF13("GF-13.1-principal-screws-of-inertia", "N s = λQ₀s: pitches ±√(d_i/m), axes through c (erratum 13)", "GF §13.1",
+SOMA_STUDY_DOUBLE("GF-13.1-principal-screws-of-inertia", "N s = λQ₀s: pitches ±√(d_i/m), axes through c (erratum 13)", "GF §13.1",
      principal);
-GF13("GF-13.1-principal-screw-commutators", "Commutators of the principal screws of inertia, 12 cases", "GF §13.1",
+SOMA_STUDY_DOUBLE("GF-13.1-principal-screw-commutators", "Commutators of the principal screws of inertia, 12 cases", "GF §13.1",
      commutators);
-#undef GF13
 
 }  // namespace soma::studies::gf13::SOMA_UNITY_ID

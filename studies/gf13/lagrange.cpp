@@ -87,7 +87,7 @@ void energies(Context& ctx) {
                  wm <= 3 * wm1 ? "bounded" : "drifts");
   ctx.note("RK4 over the first second " + toString(wr1, 3) + " J, over 10 s " + toString(wr, 3) + " J; midpoint over the "
            "first second " + toString(wm1, 3) + " J, over 10 s " + toString(wm, 3) + " J.");
-  recordFails(ctx, "E_K + printed E_P = E_K + Σ g̃ᵀc̃_i = E_K − Σ m g z conserved (lines 8081–8085)", "3", wp, 1e-3);
+  ctx.checkPrintedFails("E_K + printed E_P = E_K + Σ g̃ᵀc̃_i = E_K − Σ m g z conserved (lines 8081–8085)", "3", wp, 1e-3);
   // drift per scalar (RK4 and midpoint, 1 s at h = 2 ms)
   std::string table;
   const int n1 = 500;
@@ -170,12 +170,12 @@ void partials(Context& ctx) {
   }
   ctx.checkResidual("∂s_j/∂θ_i = [s_i, s_j] (i ≤ j), 0 otherwise (4th-order differences, d = 1e-3)", es, 1e-9);
   ctx.checkResidual("∂q̇_j/∂θ_i = [s_i, q̇_j − q̇_i] for i ≤ j, 0 for j < i (corrected, erratum 4)", eq, 1e-9);
-  recordFails(ctx, "∂q̇_j/∂θ_i nonzero only 'if j ≤ i' (line 8127): |∂q̇_j/∂θ_i| for i < j", "4", eqp, 1e-6);
+  ctx.checkPrintedFails("∂q̇_j/∂θ_i nonzero only 'if j ≤ i' (line 8127): |∂q̇_j/∂θ_i| for i < j", "4", eqp, 1e-6);
   ctx.checkResidual("∂N_j/∂θ_i = −ad(s_i)ᵀN_j − N_j ad(s_i) for i ≤ j (corrected, erratum 5)", eN, 1e-9);
-  recordFails(ctx, "∂N_j/∂θ_i = −ad(s_i)ᵀN_j + N_j ad(s_i) (line 8131), i = j", "5", eNp, 1e-6);
+  ctx.checkPrintedFails("∂N_j/∂θ_i = −ad(s_i)ᵀN_j + N_j ad(s_i) (line 8131), i = j", "5", eNp, 1e-6);
   ctx.checkResidual("∂E_K/∂θ_i = −Σ_{j≥i} q̇_jᵀN_j[s_i, q̇_i] (differences in __float128)", eK, 1e-12);
   ctx.checkResidual("∂E_P/∂θ_i = −Σ_{j≥i} s_iᵀN_j g = C_i", eP, 1e-12);
-  recordFails(ctx, "∂E_P/∂θ_i = Σ_{j≥i} −m_j g k·(ω_i × c_j + v_i) (line 8139)", "3", ePp, 1e-6);
+  ctx.checkPrintedFails("∂E_P/∂θ_i = Σ_{j≥i} −m_j g k·(ω_i × c_j + v_i) (line 8139)", "3", ePp, 1e-6);
   ctx.note("Line 8115 writes e^{θ_j ad(s_j)} s_i⁰ for s_j⁰ (erratum 6, typo).");
 }
 
@@ -261,7 +261,7 @@ void christoffel(Context& ctx) {
   }
   ctx.checkResidual("B_ijkθ̇_jθ̇_k = Ȧ_ijθ̇_j − ½∂_iA_jkθ̇_jθ̇_k (line 8153, relative)", maxAbs(DV(lhs - rhs)) / maxAbs(lhs), 1e-13);
   ctx.checkResidual("B_ijk = ½(∂_kA_ij + ∂_jA_ik − ∂_iA_jk) (relative)", eb / sc, 1e-13);
-  recordFails(ctx, "B_ijk = ½(∂_kA_ij + ∂_iA_ik − ∂_iA_jk) (line 8165)", "7", ep / sc, 1e-6);
+  ctx.checkPrintedFails("B_ijk = ½(∂_kA_ij + ∂_iA_ik − ∂_iA_jk) (line 8165)", "7", ep / sc, 1e-6);
   const DM M = Adot - 2 * Cm;
   ctx.checkResidual("Ȧ − 2B(θ̇) is skew-symmetric (passivity; relative)", maxAbs(DM(M + M.transpose())) / maxAbs(M), 1e-13);
 }
@@ -291,7 +291,7 @@ void dAcases(Context& ctx) {
       }
   ctx.checkEqual("index triples (i, j ≤ k) on a 6R", 126, triples);
   ctx.checkResidual("∂A_jk/∂θ_i in the three cases i ≤ j, j < i ≤ k, k < i (relative to max |∂A|)", worst / sc, 1e-13);
-  recordFails(ctx, "A_jk = s_kᵀ(N_j + … + N_n)s_j for j < k (line 8183)", "9", typo / maxAbs(A), 1e-6);
+  ctx.checkPrintedFails("A_jk = s_kᵀ(N_j + … + N_n)s_j for j < k (line 8183)", "9", typo / maxAbs(A), 1e-6);
 }
 
 /// A stable equilibrium (minimum of E_P) by Levenberg–Marquardt on ∇E_P = C with Hessian Q, from several starts.
@@ -397,7 +397,7 @@ void harmonicScrews(Context& ctx) {
       for (int i = 0; i < 6; ++i) s += A(i, i) * P(i, a) * P(i, b);
       typo = std::max(typo, abs(s));
     }
-  recordFails(ctx, "A_ijφ_iψ_i = 0 (line 8246)", "16", typo, 1e-6);
+  ctx.checkPrintedFails("A_ijφ_iψ_i = 0 (line 8246)", "16", typo, 1e-6);
   std::string pitches;
   for (int a = 0; a < 6; ++a) {
     const V6 h = H.col(a);
@@ -409,15 +409,12 @@ void harmonicScrews(Context& ctx) {
 
 }  // namespace
 
-#define GF13(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-GF13("GF-13.4-lagrangian-energies", "E_K + Σmgz conserved in free motion, per integrator and scalar (erratum 3)", "GF §13.4", energies);
-GF13("GF-13.4.1-partial-derivatives", "∂s_j, ∂q̇_j, ∂N_j, ∂E_K, ∂E_P with respect to θ_i (errata 3–6)", "GF §13.4.1", partials);
-GF13("GF-13.4.1-euler-lagrange-agreement", "Euler–Lagrange by differentiation = Newton–Euler", "GF §13.4.1", eulerLagrange);
-GF13("GF-13.4.2-christoffel-B", "B = Christoffel symbols of A; Ȧ − 2B(θ̇) skew (erratum 7)", "GF §13.4.2", christoffel);
-GF13("GF-13.4.2-dA-three-cases", "∂A_jk/∂θ_i in three index cases (erratum 9)", "GF §13.4.2", dAcases);
-GF13("GF-13.4.3-small-oscillations", "Small oscillations: Q = Hessian of E_P, normal modes (errata 8, 17)", "GF §13.4.3", smallOscillations);
-GF13("GF-13.4.3-harmonic-screws", "Harmonic screws are A- and Q-orthogonal (erratum 16)", "GF §13.4.3", harmonicScrews);
-#undef GF13
+SOMA_STUDY_DOUBLE("GF-13.4-lagrangian-energies", "E_K + Σmgz conserved in free motion, per integrator and scalar (erratum 3)", "GF §13.4", energies);
+SOMA_STUDY_DOUBLE("GF-13.4.1-partial-derivatives", "∂s_j, ∂q̇_j, ∂N_j, ∂E_K, ∂E_P with respect to θ_i (errata 3–6)", "GF §13.4.1", partials);
+SOMA_STUDY_DOUBLE("GF-13.4.1-euler-lagrange-agreement", "Euler–Lagrange by differentiation = Newton–Euler", "GF §13.4.1", eulerLagrange);
+SOMA_STUDY_DOUBLE("GF-13.4.2-christoffel-B", "B = Christoffel symbols of A; Ȧ − 2B(θ̇) skew (erratum 7)", "GF §13.4.2", christoffel);
+SOMA_STUDY_DOUBLE("GF-13.4.2-dA-three-cases", "∂A_jk/∂θ_i in three index cases (erratum 9)", "GF §13.4.2", dAcases);
+SOMA_STUDY_DOUBLE("GF-13.4.3-small-oscillations", "Small oscillations: Q = Hessian of E_P, normal modes (errata 8, 17)", "GF §13.4.3", smallOscillations);
+SOMA_STUDY_DOUBLE("GF-13.4.3-harmonic-screws", "Harmonic screws are A- and Q-orthogonal (erratum 16)", "GF §13.4.3", harmonicScrews);
 
 }  // namespace soma::studies::gf13::SOMA_UNITY_ID

@@ -77,10 +77,6 @@ template <class S, class F> S diff8(F&& f, const S& d) {
   for (int k = 1; k <= 4; ++k) r += c[k - 1] * (f(S(k) * d) - f(S(-k) * d));
   return r / d;
 }
-inline bool recordFails(Context& c, const std::string& name, const std::string& erratum, double residual, double tol) {
-  return c.record(name + " [as printed]", "fails (erratum " + erratum + ")", "residual " + toString(residual, 6), residual, tol,
-                  std::isfinite(residual) && residual > tol);
-}
 
 /// The invented Grashof crank–rocker of checks/fourbar_check.py: d = (1, 2.2, 1.8, 2.5).
 inline FourBar<double> crankRocker(double d2 = 2.2) {

@@ -44,7 +44,7 @@ void duality(Context& ctx) {
   }
   ctx.checkResidual("W_iᵀz_j = 0 for n+1 ≤ i ≤ 6, 1 ≤ j ≤ n (corrected ranges), n = 1…5", worst, 1e-14);
   ctx.checkEqual("ranks n and 6 − n, together a basis of R⁶ (n = 1…5)", 5, rankOk);
-  recordFails(ctx, "W_iᵀz_j = 0 for 1 ≤ i ≤ n, n+1 ≤ j ≤ 6 (line 8866: the constraints against the complement)", "4", printed, 1e-3);
+  ctx.checkPrintedFails("W_iᵀz_j = 0 for 1 ≤ i ≤ n, n+1 ≤ j ≤ 6 (line 8866: the constraints against the complement)", "4", printed, 1e-3);
 }
 
 void fixedPoint(Context& ctx) {
@@ -83,8 +83,8 @@ void quadricVariety(Context& ctx) {
   ctx.checkNear("x = 2(a₀b₁ − a₁b₀ + a₂b₃ − a₃b₂) recovers the contact point", X0, 2 * X, 1e-15);
   const V3 fix = quadricSurfaceQuartics<double>(kx, ky, a, b), pr = quadricSurfaceQuartics<double>(kx, ky, a, b, GfPrinting::AsPrinted);
   ctx.checkResidual("corrected quartics k_xX² + k_yY² − Z|a|², k_xn₃X + (a₀a₂+a₁a₃)|a|², k_yn₃Y + (a₂a₃−a₀a₁)|a|² vanish", fix.cwiseAbs().maxCoeff(), 1e-15);
-  recordFails(ctx, "surface quartic 2k_xX² + 2k_yY² − Z|a|² (line 8908)", "5", std::abs(pr(0)), 1e-6);
-  recordFails(ctx, "alignment quartics with coefficient 2 (lines 8922, 8924)", "6", std::max(std::abs(pr(1)), std::abs(pr(2))), 1e-6);
+  ctx.checkPrintedFails("surface quartic 2k_xX² + 2k_yY² − Z|a|² (line 8908)", "5", std::abs(pr(0)), 1e-6);
+  ctx.checkPrintedFails("alignment quartics with coefficient 2 (lines 8922, 8924)", "6", std::max(std::abs(pr(1)), std::abs(pr(2))), 1e-6);
   ctx.note("Exact pose on k_x = 3/5, k_y = −7/4 at (1/3, −2/5), normal-aligned, extra spin 2/7: printed residuals " + toString(pr(0), 3) +
            ", " + toString(pr(1), 3) + ", " + toString(pr(2), 3) + " (geometry_check.py: −0.053, −0.081, −0.283 in some order).");
   // the 3-plane a = 0 lies in the variety
@@ -144,7 +144,7 @@ void rigidBody(Context& ctx) {
   ctx.checkResidual("DAE (q̈, λ) = reduced equations q̈ᵀNz_i + q̇ᵀN[z_i, q̇] = Fᵀz_i", eRed, 1e-13);
   ctx.checkResidual("q̈ = Euler's equations about the fixed point, I_o ω̇ + ω × I_o ω = M_o", eEuler, 1e-12);
   ctx.checkResidual("constraint force Σλ_jW_j (force part) = m c̈ − F_force", eForce, 1e-12);
-  recordFails(ctx, "equation without the coadjoint term {q̇, N q̇} (braces lost to OCR, line 8950)", "7", eBraces, 1e-6);
+  ctx.checkPrintedFails("equation without the coadjoint term {q̇, N q̇} (braces lost to OCR, line 8950)", "7", eBraces, 1e-6);
 }
 
 void dualBasis(Context& ctx) {
@@ -237,7 +237,7 @@ void penRobot(Context& ctx) {
     printed = std::max(printed, std::abs(wrong));
   }
   ctx.checkResidual("eliminated equations Σ_i α_ai(joint eq. i) = Σ α_ai τ_i = 0 (free motion)", maxAbs(DV(Zf.transpose() * tid)), 1e-10);
-  recordFails(ctx, "gravity term −G_jᵀz_i in the eliminated equations (line 9002/9078 typo)", "12", printed, 1e-6);
+  ctx.checkPrintedFails("gravity term −G_jᵀz_i in the eliminated equations (line 9002/9078 typo)", "12", printed, 1e-6);
 }
 
 void freedomVectors(Context& ctx) {
@@ -315,20 +315,17 @@ void shakingWrench(Context& ctx) {
 
 }  // namespace
 
-#define GF14(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-GF14("GF-14.2.1-freedom-constraint-duality", "Freedom screws and dual constraint wrenches (erratum 4)", "GF §14.2.1", duality);
-GF14("GF-14.2.1-fixed-point-example", "Fixed point: rotations vs pure forces", "GF §14.2.1", fixedPoint);
-GF14("GF-14.2.1-pen-planar-example", "Pen on a table: se(2) and its self-reciprocal wrenches", "GF §14.2.1", penPlanar);
-GF14("GF-14.2.1-quadric-surface-constraint-variety", "Quadric-surface contact quartics on the Study quadric (errata 5, 6)", "GF §14.2.1", quadricVariety);
-GF14("GF-14.2.1-quadric-surface-freedoms-wrenches", "Quadric-surface freedoms and wrenches at (x, y)", "GF §14.2.1", quadricFreedoms);
-GF14("GF-14.2.2-constrained-rigid-body", "Constrained rigid body: DAE = reduced = Euler (erratum 7)", "GF §14.2.2", rigidBody);
-GF14("GF-14.2.2-dual-basis-multipliers", "Multipliers from a dual basis, independent of the complement", "GF §14.2.2", dualBasis);
-GF14("GF-14.2.3-constrained-serial-robot", "6R holding a pen: simulation, drift, λ (erratum 12)", "GF §14.2.3", penRobot);
-GF14("GF-14.3.1-freedom-vectors", "Freedom vectors = null space of the leaf constraints; mobilities", "GF §14.3.1", freedomVectors);
-GF14("GF-14.3.2-parallel-mechanism-equations", "Elimination with freedom vectors = multipliers (4-bar, Stewart)", "GF §14.3.2", parallelEquations);
-GF14("GF-14.3.2-constraint-magnitude", "Constraint magnitudes by dual vectors, defined up to the kernel", "GF §14.3.2", constraintMagnitude);
-GF14("GF-14.3.2-shaking-wrench", "Shaking wrench = momentum rate = ground reactions", "GF §14.3.2", shakingWrench);
-#undef GF14
+SOMA_STUDY_DOUBLE("GF-14.2.1-freedom-constraint-duality", "Freedom screws and dual constraint wrenches (erratum 4)", "GF §14.2.1", duality);
+SOMA_STUDY_DOUBLE("GF-14.2.1-fixed-point-example", "Fixed point: rotations vs pure forces", "GF §14.2.1", fixedPoint);
+SOMA_STUDY_DOUBLE("GF-14.2.1-pen-planar-example", "Pen on a table: se(2) and its self-reciprocal wrenches", "GF §14.2.1", penPlanar);
+SOMA_STUDY_DOUBLE("GF-14.2.1-quadric-surface-constraint-variety", "Quadric-surface contact quartics on the Study quadric (errata 5, 6)", "GF §14.2.1", quadricVariety);
+SOMA_STUDY_DOUBLE("GF-14.2.1-quadric-surface-freedoms-wrenches", "Quadric-surface freedoms and wrenches at (x, y)", "GF §14.2.1", quadricFreedoms);
+SOMA_STUDY_DOUBLE("GF-14.2.2-constrained-rigid-body", "Constrained rigid body: DAE = reduced = Euler (erratum 7)", "GF §14.2.2", rigidBody);
+SOMA_STUDY_DOUBLE("GF-14.2.2-dual-basis-multipliers", "Multipliers from a dual basis, independent of the complement", "GF §14.2.2", dualBasis);
+SOMA_STUDY_DOUBLE("GF-14.2.3-constrained-serial-robot", "6R holding a pen: simulation, drift, λ (erratum 12)", "GF §14.2.3", penRobot);
+SOMA_STUDY_DOUBLE("GF-14.3.1-freedom-vectors", "Freedom vectors = null space of the leaf constraints; mobilities", "GF §14.3.1", freedomVectors);
+SOMA_STUDY_DOUBLE("GF-14.3.2-parallel-mechanism-equations", "Elimination with freedom vectors = multipliers (4-bar, Stewart)", "GF §14.3.2", parallelEquations);
+SOMA_STUDY_DOUBLE("GF-14.3.2-constraint-magnitude", "Constraint magnitudes by dual vectors, defined up to the kernel", "GF §14.3.2", constraintMagnitude);
+SOMA_STUDY_DOUBLE("GF-14.3.2-shaking-wrench", "Shaking wrench = momentum rate = ground reactions", "GF §14.3.2", shakingWrench);
 
 }  // namespace soma::studies::gf14::SOMA_UNITY_ID

@@ -46,7 +46,7 @@ void nullVector(Context& ctx) {
     prPred = std::max(prPred, std::abs(rb(0) - 1.0 * (2.5 - 2.2) * std::sin(p.theta2)) + std::abs(rb(1)) + std::abs(rb(2)));
   }
   ctx.checkResidual("α₁s₁ + α₂s₂ + α₃s₃ + α₄s₄ = 0 with α₁ = d₁d₂ sin θ₂ − d₂d₄ sin(θ₁+θ₂) (12 postures)", fix, 1e-14);
-  recordFails(ctx, "α₁ = d₁d₄ sin θ₂ − d₂d₄ sin(θ₁+θ₂) (line 9177)", "8", prRes, 1e-6);
+  ctx.checkPrintedFails("α₁ = d₁d₄ sin θ₂ − d₂d₄ sin(θ₁+θ₂) (line 9177)", "8", prRes, 1e-6);
   ctx.checkResidual("printed residual = (d₁(d₄ − d₂) sin θ₂, 0, 0) exactly", prPred, 1e-14);
   const FourBar<double> eq = crankRocker(2.5);  // d₂ = d₄: the printed formula happens to be right
   const FourBarPosture<double> p = eq.posture(1.0);
@@ -74,7 +74,7 @@ void fourBarEom(Context& ctx) {
   }
   ctx.checkResidual("α₁τ = q̈₁ᵀN₁α₁s₁ + q̈₂ᵀN₂(α₁s₁+α₂s₂) − q̈₃ᵀN₃α₄s₄ = Lagrange multipliers (3-D tree, 5 states of fourbar_check.py)", eMul, 1e-11);
   ctx.checkResidual("= virtual work τθ̇₁ = dE_K/dt (8th-order differences in __float128)", ePow, 1e-12);
-  recordFails(ctx, "the same equation with the printed α₁ (fourbar_check.py: 0.285)", "8", ePr, 1e-3);
+  ctx.checkPrintedFails("the same equation with the printed α₁ (fourbar_check.py: 0.285)", "8", ePr, 1e-3);
   ctx.note("Printed-α torque error " + toString(ePr, 4) + " N·m (the catalogue's script: 0.285). Invented crank–rocker d = (1, 2.2, 1.8, 2.5), "
            "masses 1, 2, 1.5 kg (the book gives no numbers).");
   // free motion: the book's equation integrated (RK4 on θ₁) conserves E_K to the order of the method
@@ -137,7 +137,7 @@ void shakingMoment(Context& ctx) {
     ePr = std::max(ePr, std::abs(fb.shakingMomentLhs(t1, t1d, t1dd, GfPrinting::AsPrinted) - dP));
   }
   ctx.checkResidual("s₁-paired root equation (7 terms, −θ̈₄s₁ᵀN₃s₄) = s₁ᵀ d(total momentum)/dt (relative)", eFix / sc, 1e-8);
-  recordFails(ctx, "the display at line 9203 with +θ̈₄s₁ᵀN₃s₄ (q̇₃ = +θ̇₄s₄, line 9159)", "9", ePr / sc, 1e-4);
+  ctx.checkPrintedFails("the display at line 9203 with +θ̈₄s₁ᵀN₃s₄ (q̇₃ = +θ̇₄s₄, line 9159)", "9", ePr / sc, 1e-4);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -197,7 +197,7 @@ void bipedEquations(Context& ctx) {
     pr = std::max(pr, (tot - sumW).cwiseAbs().maxCoeff());
   }
   ctx.checkResidual("knee, hip and torso equations with λ_RxW_Rx + λ_RyW_Ry + λ_LxW_Lx + λ_LyW_Ly hold (relative)", res / sc, 1e-12);
-  recordFails(ctx, "root equation with W_Rx + W_Ry + W_Lx + W_Ly (multipliers missing, line 9250)", "11", pr / sc, 1e-3);
+  ctx.checkPrintedFails("root equation with W_Rx + W_Ry + W_Lx + W_Ly (multipliers missing, line 9250)", "11", pr / sc, 1e-3);
   // passive fall with both feet pinned (τ = 0): RK4 + projection, 0.25 s
   ConstrainedState<double> y{DV::Zero(7), DV::Zero(7)};
   const double e0 = m.totalEnergy(y);
@@ -229,7 +229,7 @@ void bipedFootForce(Context& ctx) {
     ePrX = std::max(ePrX, std::abs(pr + lam(0)));
   }
   ctx.checkResidual("λ_Ry by α_Rh = (y_Ra − y_Rk)/D, α_Rk = (y_h − y_Ra)/D = full multiplier system", eFix, 1e-10);
-  recordFails(ctx, "λ_Ry with the printed α (x-based, lines 9268–9282)", "10", ePr, 1e-3);
+  ctx.checkPrintedFails("λ_Ry with the printed α (x-based, lines 9268–9282)", "10", ePr, 1e-3);
   ctx.checkResidual("the printed weights give −λ_Rx (the horizontal force)", ePrX, 1e-10);
   const BipedRun r = bipedShift(b);
   double agree = 0;
@@ -310,7 +310,7 @@ void stewartLegs(Context& ctx) {
   const M6 NP = sl.platformInertia().transformed(pose).matrix();
   const V6 swapped = rl.platformWrench - 2 * coadjoint(SE3Tangent<double>(qd), V6(NP * qd));
   ctx.checkResidual("massless legs: platform N q̈ + {q̇, N q̇} − G = −Σ F_i (unit leg lines)", (legs - rl.platformWrench).cwiseAbs().maxCoeff(), 1e-11);
-  recordFails(ctx, "platform equation with {N q̇, q̇} = −{q̇, N q̇} (line 9329)", "7", (legs - swapped).cwiseAbs().maxCoeff(), 1e-6);
+  ctx.checkPrintedFails("platform equation with {N q̇, q̇} = −{q̇, N q̇} (line 9329)", "7", (legs - swapped).cwiseAbs().maxCoeff(), 1e-6);
 }
 
 void stewartAlpha(Context& ctx) {
@@ -343,7 +343,7 @@ void stewartAlpha(Context& ctx) {
       const double a = rr.thetaDDot(6 + 3 * i) * C(row, 6 + 3 * i), b = rr.thetaDDot(7 + 3 * i) * C(row, 7 + 3 * i);
       printed = std::max(printed, std::abs(acc(row) - a - b + a * b));
     }
-  recordFails(ctx, "the same with φ̈W ᵀs_U1 θ̈W ᵀs_U2 multiplied (no '+', line 9381)", "14", printed, 1e-6);
+  ctx.checkPrintedFails("the same with φ̈W ᵀs_U1 θ̈W ᵀs_U2 multiplied (no '+', line 9381)", "14", printed, 1e-6);
   // a posture near a singularity: the legs' lines nearly dependent → the α matrix ill-conditioned
   std::array<V3, 6> b6, p6;
   for (int i = 0; i < 6; ++i) {
@@ -578,21 +578,18 @@ void figure144(Context& ctx) {
 
 }  // namespace
 
-#define GF14(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-GF14("GF-14.4-planar-inertia", "Planar inertia = the (ω_z, v_x, v_y) block of N", "GF §14.4", planarInertiaStudy);
-GF14("GF-14.4-four-bar-null-vector", "4-bar null vector α (erratum 8)", "GF §14.4", nullVector);
-GF14("GF-14.4-four-bar-eom", "4-bar equation of motion = multipliers = virtual work; torque curve; free motion", "GF §14.4", fourBarEom);
-GF14("GF-14.4-four-bar-shaking-moment", "4-bar shaking moment = momentum rate (erratum 9)", "GF §14.4", shakingMoment);
-GF14("GF-14.5-biped-equations", "Biped joint equations, root equation (erratum 11), passive fall", "GF §14.5", bipedEquations);
-GF14("GF-14.5-biped-vertical-foot-force", "Biped vertical foot force by α (erratum 10), lift-off", "GF §14.5", bipedFootForce);
-GF14("GF-14.6-stewart-constraint-wrenches", "Stewart ground-joint constraint wrenches", "GF §14.6", stewartWrenches);
-GF14("GF-14.6-stewart-leg-equations", "Stewart leg and platform equations (errata 7, 13)", "GF §14.6", stewartLegs);
-GF14("GF-14.6-stewart-alpha-system", "Stewart 18 × 24 α system, J⁻ᵀ limit, singularity (erratum 14)", "GF §14.6", stewartAlpha);
-GF14("GF-14.6-stewart-inverse-dynamics-algorithm", "Stewart 5-step inverse dynamics: power balance, computed-force control (erratum 15)", "GF §14.6", stewartAlgorithm);
-GF14("GF-14-fig-14.2", "Fig. 14.2: the planar 4-bar", "GF §14.4 Fig. 14.2", figure142);
-GF14("GF-14-fig-14.3", "Fig. 14.3: the planar biped", "GF §14.5 Fig. 14.3", figure143);
-GF14("GF-14-fig-14.4", "Fig. 14.4: platform and one leg of a Stewart platform", "GF §14.6 Fig. 14.4", figure144);
-#undef GF14
+SOMA_STUDY_DOUBLE("GF-14.4-planar-inertia", "Planar inertia = the (ω_z, v_x, v_y) block of N", "GF §14.4", planarInertiaStudy);
+SOMA_STUDY_DOUBLE("GF-14.4-four-bar-null-vector", "4-bar null vector α (erratum 8)", "GF §14.4", nullVector);
+SOMA_STUDY_DOUBLE("GF-14.4-four-bar-eom", "4-bar equation of motion = multipliers = virtual work; torque curve; free motion", "GF §14.4", fourBarEom);
+SOMA_STUDY_DOUBLE("GF-14.4-four-bar-shaking-moment", "4-bar shaking moment = momentum rate (erratum 9)", "GF §14.4", shakingMoment);
+SOMA_STUDY_DOUBLE("GF-14.5-biped-equations", "Biped joint equations, root equation (erratum 11), passive fall", "GF §14.5", bipedEquations);
+SOMA_STUDY_DOUBLE("GF-14.5-biped-vertical-foot-force", "Biped vertical foot force by α (erratum 10), lift-off", "GF §14.5", bipedFootForce);
+SOMA_STUDY_DOUBLE("GF-14.6-stewart-constraint-wrenches", "Stewart ground-joint constraint wrenches", "GF §14.6", stewartWrenches);
+SOMA_STUDY_DOUBLE("GF-14.6-stewart-leg-equations", "Stewart leg and platform equations (errata 7, 13)", "GF §14.6", stewartLegs);
+SOMA_STUDY_DOUBLE("GF-14.6-stewart-alpha-system", "Stewart 18 × 24 α system, J⁻ᵀ limit, singularity (erratum 14)", "GF §14.6", stewartAlpha);
+SOMA_STUDY_DOUBLE("GF-14.6-stewart-inverse-dynamics-algorithm", "Stewart 5-step inverse dynamics: power balance, computed-force control (erratum 15)", "GF §14.6", stewartAlgorithm);
+SOMA_STUDY_DOUBLE("GF-14-fig-14.2", "Fig. 14.2: the planar 4-bar", "GF §14.4 Fig. 14.2", figure142);
+SOMA_STUDY_DOUBLE("GF-14-fig-14.3", "Fig. 14.3: the planar biped", "GF §14.5 Fig. 14.3", figure143);
+SOMA_STUDY_DOUBLE("GF-14-fig-14.4", "Fig. 14.4: platform and one leg of a Stewart platform", "GF §14.6 Fig. 14.4", figure144);
 
 }  // namespace soma::studies::gf14::SOMA_UNITY_ID

@@ -91,7 +91,7 @@ void jointEquations(Context& ctx) {
   }
   ctx.checkResidual("joint equations Σ_{i⪯j} (spatial, corrected) = Euler–Lagrange by differentiating E_K − E_P (__float128, relative)", eL / sc, 1e-12);
   ctx.checkResidual("joint equations = recursive up/down pass (relative)", eR / sc, 1e-13);
-  recordFails(ctx, "Σ over i ≺ j (link i left out, lines 8736/8740)", "1", eStrict / sc, 1e-6);
+  ctx.checkPrintedFails("Σ over i ≺ j (link i left out, lines 8736/8740)", "1", eStrict / sc, 1e-6);
   ctx.note("Random Fig. 14.1 tree (6 revolute joints on random lines, masses 0.5–3 kg, g = 9.81), 5 random states; max |τ| = " +
            toString(sc, 4) + " N·m.");
 }
@@ -265,8 +265,8 @@ void recursive(Context& ctx) {
     p3 = std::min(p3, maxAbs(DV(t.inverseDynamics(th, thd, thdd, TreeRnePrinting::ParentVelocityForAcceleration) - sp)) / sc);
   }
   ctx.checkResidual("branched (Fig. 14.1), wide and deep trees: up/down pass = joint equations (relative)", e2, 1e-13);
-  recordFails(ctx, "down pass with Ad(−θ_i s_c⁰)ᵀ (parent's angle, line 8838)", "2", p2, 1e-3);
-  recordFails(ctx, "up pass with the parent's velocity q̇_{i−1}⁰ for its acceleration (line 8824)", "3", p3, 1e-3);
+  ctx.checkPrintedFails("down pass with Ad(−θ_i s_c⁰)ᵀ (parent's angle, line 8838)", "2", p2, 1e-3);
+  ctx.checkPrintedFails("up pass with the parent's velocity q̇_{i−1}⁰ for its acceleration (line 8824)", "3", p3, 1e-3);
   // (3) a massless leaf: the pass still runs; its joint carries no own inertia term
   {
     auto t0 = randomTree(g, kFig141);
@@ -320,16 +320,13 @@ void figure141(Context& ctx) {
 
 }  // namespace
 
-#define GF14(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-GF14("GF-14.1-tree-structure", "Tree of Fig. 14.1: ancestry, levels, partial order, cycles rejected", "GF §14.1", treeStructure);
-GF14("GF-14.1.1-tree-joint-equations", "Joint equations over the subtree = Euler–Lagrange (erratum 1)", "GF §14.1.1", jointEquations);
-GF14("GF-14.1.1-star-root-equation", "Free-floating star: root equation, momentum and energy conserved", "GF §14.1.1", starRoot);
-GF14("GF-14.1.1-multi-dof-passive-joint", "Ball joint as three passive freedoms = body with a fixed point", "GF §14.1.1", ballJoint);
-GF14("GF-14.1.2-tree-kinematics", "POE along the ancestry; star relative to the root", "GF §14.1.2", treeKinematics);
-GF14("GF-14.1.2-tree-velocities-accelerations", "Tree velocities and accelerations = derivatives of K_i", "GF §14.1.2", treeVelocities);
-GF14("GF-14.1.3-tree-recursive-dynamics", "Up/down Newton–Euler pass over a tree (errata 2, 3)", "GF §14.1.3", recursive);
-GF14("GF-14-fig-14.1", "Fig. 14.1: the tree-structured mechanism", "GF §14.1 Fig. 14.1", figure141);
-#undef GF14
+SOMA_STUDY_DOUBLE("GF-14.1-tree-structure", "Tree of Fig. 14.1: ancestry, levels, partial order, cycles rejected", "GF §14.1", treeStructure);
+SOMA_STUDY_DOUBLE("GF-14.1.1-tree-joint-equations", "Joint equations over the subtree = Euler–Lagrange (erratum 1)", "GF §14.1.1", jointEquations);
+SOMA_STUDY_DOUBLE("GF-14.1.1-star-root-equation", "Free-floating star: root equation, momentum and energy conserved", "GF §14.1.1", starRoot);
+SOMA_STUDY_DOUBLE("GF-14.1.1-multi-dof-passive-joint", "Ball joint as three passive freedoms = body with a fixed point", "GF §14.1.1", ballJoint);
+SOMA_STUDY_DOUBLE("GF-14.1.2-tree-kinematics", "POE along the ancestry; star relative to the root", "GF §14.1.2", treeKinematics);
+SOMA_STUDY_DOUBLE("GF-14.1.2-tree-velocities-accelerations", "Tree velocities and accelerations = derivatives of K_i", "GF §14.1.2", treeVelocities);
+SOMA_STUDY_DOUBLE("GF-14.1.3-tree-recursive-dynamics", "Up/down Newton–Euler pass over a tree (errata 2, 3)", "GF §14.1.3", recursive);
+SOMA_STUDY_DOUBLE("GF-14-fig-14.1", "Fig. 14.1: the tree-structured mechanism", "GF §14.1 Fig. 14.1", figure141);
 
 }  // namespace soma::studies::gf14::SOMA_UNITY_ID

@@ -63,10 +63,6 @@ template <class F> auto cdiff(F&& f, double h = 1e-3) {
   using R = std::decay_t<decltype(f(0.0).eval())>;
   return R((8 * (f(h) - f(-h)) - (f(2 * h) - f(-2 * h))) / (12 * h));
 }
-inline bool recordFails(Context& c, const std::string& name, const std::string& erratum, double residual, double tol) {
-  return c.record(name + " [as printed]", "fails (erratum " + erratum + ")", "residual " + toString(residual, 6), residual,
-                  tol, std::isfinite(residual) && residual > tol);
-}
 /// A random 6R robot with random links (g = 9.81): the ch. 13 model.
 inline SerialDynamics<double> randomRobot(std::mt19937_64& g, int n = 6, double grav = 9.81) {
   std::vector<SE3Tangent<double>> s;

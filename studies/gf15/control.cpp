@@ -55,7 +55,7 @@ void geodesicLaw(Context& ctx) {
   } catch (const InvalidInput&) {
     drift = 1e300;  // driven into a singularity
   }
-  recordFails(ctx, "the law with ch. 13's printed C_i = +s_iᵀN̄_ig (0.1 s): twist drift", "ch13 E1", drift, 1e-6);
+  ctx.checkPrintedFails("the law with ch. 13's printed C_i = +s_iᵀN̄_ig (0.1 s): twist drift", "ch13 E1", drift, 1e-6);
 }
 
 void curvatureStability(Context& ctx) {
@@ -96,7 +96,7 @@ void curvatureStability(Context& ctx) {
   const V6 a = lineScrew(unit3(g), V3::Zero()), b = lineScrew(unit3(g), V3::Zero());
   const V6 nab = biinvariantCovariant<double>(a, b);
   ctx.checkResidual("so(3) is totally geodesic: the v-part of ∇_XY for rotations about 0", nab.tail<3>().norm(), 1e-16);
-  recordFails(ctx, "\"a subgroup is flat\": |R(X,Y)Y| for two rotations about the origin", "E15.11", curvature<double>(a, b, b).norm(), 1e-6);
+  ctx.checkPrintedFails("\"a subgroup is flat\": |R(X,Y)Y| for two rotations about the origin", "E15.11", curvature<double>(a, b, b).norm(), 1e-6);
 }
 
 void velocityTracking(Context& ctx) {
@@ -136,7 +136,7 @@ void velocityTracking(Context& ctx) {
   }
   ctx.checkResidual("a_d(t) = 1 + (a_d(0) − 1)e^{−λt} (a_d(0) = " + toString(ad0, 6) + ")", errC, 1e-9);
   ctx.checkResidual("a_i(t) = a_i(0)e^{−λt}", other, 1e-9);
-  recordFails(ctx, "a_d(t) = 1 for all t", "E15.6", errP, 1e-6);
+  ctx.checkPrintedFails("a_d(t) = 1 for all t", "E15.6", errP, 1e-6);
 }
 
 void friction(Context& ctx) {
@@ -154,7 +154,7 @@ void friction(Context& ctx) {
   const auto comp = simulateGeodesicControl<double>(s.robot, cf, mu, s.th0, s.td0, 0.002, 250, 250);
   const auto raw = simulateGeodesicControl<double>(s.robot, c, mu, s.th0, s.td0, 0.002, 250, 250);
   ctx.checkResidual("plant with friction μθ̇, law with +μ_iθ̇_i: |θ(0.5) − θ_frictionless(0.5)|", maxAbs(DV(comp.back().theta - ref.back().theta)), 1e-12);
-  recordFails(ctx, "control: friction not compensated, |θ − θ_frictionless|", "— control", maxAbs(DV(raw.back().theta - ref.back().theta)), 1e-6);
+  ctx.checkPrintedFails("control: friction not compensated, |θ − θ_frictionless|", "— control", maxAbs(DV(raw.back().theta - ref.back().theta)), 1e-6);
 }
 
 void accelerating(Context& ctx) {
@@ -175,7 +175,7 @@ void accelerating(Context& ctx) {
   const auto bad = simulateGeodesicControl<double>(s.robot, c, DV(), s.th0, zero, 0.002, 250, 25);
   double eb = 0;
   for (const auto& smp : bad) eb = std::max(eb, (smp.twist - c.gamma * smp.t * c.sd).cwiseAbs().maxCoeff());
-  recordFails(ctx, "the printed law γ(1 − λt), Γ^l_ik: |q̇₆ − γt s_d|", "E15.5", eb, 1e-6);
+  ctx.checkPrintedFails("the printed law γ(1 − λt), Γ^l_ik: |q̇₆ − γt s_d|", "E15.5", eb, 1e-6);
   // the scalar reduction v̇ = γ(1 ± λt) − λv, v(0) = 0, γ = 0.7, λ = 2, 3 s: target γt = 2.1
   auto scalar = [](double sgn) {
     double v = 0, t = 0;
@@ -188,7 +188,7 @@ void accelerating(Context& ctx) {
     return v;
   };
   ctx.checkNear("scalar reduction, corrected: v(3) = γ·3 = 2.1", 2.1, scalar(1), 1e-10);
-  recordFails(ctx, "scalar reduction, printed γ(1 − λt): |v(3) − 2.1| (v(3) = " + toString(scalar(-1), 4) + ")", "E15.5", abs(scalar(-1) - 2.1), 1e-6);
+  ctx.checkPrintedFails("scalar reduction, printed γ(1 − λt): |v(3) − 2.1| (v(3) = " + toString(scalar(-1), 4) + ")", "E15.5", abs(scalar(-1) - 2.1), 1e-6);
   // E15.4: the path is the POSITION q₆(t) = e^{γt²s_d/2}: its spatial velocity is γt s_d
   double vel = 0;
   for (double t : {0.3, 1.0, 2.0}) {
@@ -204,7 +204,7 @@ void accelerating(Context& ctx) {
     auto Q = [&](double u) { return Mat4<double>(SE3Tangent<double>(V6(c.gamma * u * u / 2 * c.sd)).exp().matrix()); };
     return Mat4<double>((Q(t + h) - 2 * Q(t) + Q(t - h)) / (h * h));
   }();
-  recordFails(ctx, "\"q̈₆ = e^{γt²s_d/2}\": |d²q₆/dt² − e^{γt²s_d/2}| at t = 1", "E15.4", (qdd - q).cwiseAbs().maxCoeff(), 1e-3);
+  ctx.checkPrintedFails("\"q̈₆ = e^{γt²s_d/2}\": |d²q₆/dt² − e^{γt²s_d/2}| at t = 1", "E15.4", (qdd - q).cwiseAbs().maxCoeff(), 1e-3);
 }
 
 void helixFigure(Context& ctx) {
@@ -283,14 +283,11 @@ void helixFigure(Context& ctx) {
 
 }  // namespace
 
-#define GF15(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-GF15("GF-15.3-geodesic-control-law", "τ = (B − AΓ)θ̇θ̇ + C makes the closed loop a geodesic: helical motion", "GF §15.3", geodesicLaw);
-GF15("GF-15.3-curvature-stability", "Jacobi fields, R = ¼[[X,Y],Z], sectional curvature (erratum E15.11)", "GF §15.3", curvatureStability);
-GF15("GF-15.3-velocity-tracking-law", "q̈₆ = λ(s_d − q̇₆): errors decay as e^{−λt} (erratum E15.6)", "GF §15.3", velocityTracking);
-GF15("GF-15.3-friction-compensation", "Viscous friction compensated: the closed loop is the frictionless one", "GF §15.3", friction);
-GF15("GF-15.3-accelerating-geodesic", "Accelerating along a geodesic: q̇₆ = γt s_d (errata E15.4, E15.5)", "GF §15.3", accelerating);
-GF15("GF-15-fig-helical-path", "Derived figure: a helical end-effector path under the geodesic control law", "GF §15.3", helixFigure);
-#undef GF15
+SOMA_STUDY_DOUBLE("GF-15.3-geodesic-control-law", "τ = (B − AΓ)θ̇θ̇ + C makes the closed loop a geodesic: helical motion", "GF §15.3", geodesicLaw);
+SOMA_STUDY_DOUBLE("GF-15.3-curvature-stability", "Jacobi fields, R = ¼[[X,Y],Z], sectional curvature (erratum E15.11)", "GF §15.3", curvatureStability);
+SOMA_STUDY_DOUBLE("GF-15.3-velocity-tracking-law", "q̈₆ = λ(s_d − q̇₆): errors decay as e^{−λt} (erratum E15.6)", "GF §15.3", velocityTracking);
+SOMA_STUDY_DOUBLE("GF-15.3-friction-compensation", "Viscous friction compensated: the closed loop is the frictionless one", "GF §15.3", friction);
+SOMA_STUDY_DOUBLE("GF-15.3-accelerating-geodesic", "Accelerating along a geodesic: q̇₆ = γt s_d (errata E15.4, E15.5)", "GF §15.3", accelerating);
+SOMA_STUDY_DOUBLE("GF-15-fig-helical-path", "Derived figure: a helical end-effector path under the geodesic control law", "GF §15.3", helixFigure);
 
 }  // namespace soma::studies::gf15::SOMA_UNITY_ID

@@ -33,7 +33,7 @@ void natural(Context& ctx) {
   const V6 err(0.01, -0.02, 0.03, 0.002, 0.001, -0.004);  // a twist error in frame 1
   // the action of S in frame 2, mapped back to frame 1, vs the action in frame 1
   const V6 act1 = Ssel * err, act2back = H * (Ssel * (Hi * err));
-  recordFails(ctx, "selection matrix S used in two frames (origin shifted 0.4 along x): |S e − H S H⁻¹e|", "— Lipkin & Duffy", (act1 - act2back).cwiseAbs().maxCoeff(), 1e-9);
+  ctx.checkPrintedFails("selection matrix S used in two frames (origin shifted 0.4 along x): |S e − H S H⁻¹e|", "— Lipkin & Duffy", (act1 - act2back).cwiseAbs().maxCoeff(), 1e-9);
   // the invariant operator AB: built in frame 2 from the transformed screws, it is H⁻¹(AB)H
   const HybridProjectors<double> p1 = dualBasisProjectors<double>(pegFreedoms(), pegComplement());
   const HybridProjectors<double> p2 = dualBasisProjectors<double>(DM(Hi * pegFreedoms()), DM(Hi * pegComplement()));
@@ -71,7 +71,7 @@ void dualBases(Context& ctx) {
   DM S2 = S1;
   S2.col(0) += 0.5 * Z.col(0);  // "add elements of S to the basis elements of S'"
   const HybridProjectors<double> pa = dualBasisProjectors<double>(Z, S1), pb = dualBasisProjectors<double>(Z, S2);
-  recordFails(ctx, "\"the lack of uniqueness will not affect the projection\": |AB(S'₁) − AB(S'₂)| with S'₂ = S'₁ + element of S", "E15.15 (finding)",
+  ctx.checkPrintedFails("\"the lack of uniqueness will not affect the projection\": |AB(S'₁) − AB(S'₂)| with S'₂ = S'₁ + element of S", "E15.15 (finding)",
               maxAbs(DM(pa.motionProjector() - pb.motionProjector())), 1e-9);
   ctx.checkResidual("both are projectors onto the same S (image unchanged): |AB₂·AB₁ − AB₁|", maxAbs(DM(pb.motionProjector() * pa.motionProjector() - pa.motionProjector())), 1e-11);
   ctx.note("AB projects onto S along S' (its kernel); a different complement gives a different projector with the same image. "
@@ -116,7 +116,7 @@ void transformation(Context& ctx) {
   printed(1, 5) = r;
   printed(2, 4) = r;
   printed(3, 3) = 1;
-  recordFails(ctx, "the printed X̃Ỹ (+r at (2,6), (3,5), five rows)", "E15.8", maxAbs(DM(t.wrenchProjector() - printed)), 1e-9);
+  ctx.checkPrintedFails("the printed X̃Ỹ (+r at (2,6), (3,5), five rows)", "E15.8", maxAbs(DM(t.wrenchProjector() - printed)), 1e-9);
   M6 ABc = M6::Zero();
   ABc(2, 2) = ABc(5, 5) = 1;
   ABc(4, 2) = r;
@@ -205,7 +205,7 @@ void multipliers(Context& ctx) {
   const DV lamG = constraintMultipliers<double>(p, N, V, Vg);
   ctx.checkResidual("general V̇: Σλ_jW_j = XXᵀN₆⁻¹(N₆V̇ + {V, N₆V})", (V6(p.X * lamG) - secondFundamentalWrench<double>(p, N, V, Vg)).norm(), 1e-14);
   const DV lamP = constraintMultipliers<double>(p, N, V, Vg, DgPrinting::AsPrinted);
-  recordFails(ctx, "λ_j with z_i (i = n+1 fixed, line 10034), general V̇: |Σλ_jW_j − N₆II(V,V)|", "E15.9",
+  ctx.checkPrintedFails("λ_j with z_i (i = n+1 fixed, line 10034), general V̇: |Σλ_jW_j − N₆II(V,V)|", "E15.9",
               (V6(p.X * lamP) - secondFundamentalWrench<double>(p, N, V, Vg)).norm(), 1e-9);
   ctx.note("For a free constrained motion on a subgroup (here SE(2) of the plane) V̇ is tangent, W_jᵀV̇ = 0 and the first term "
            "vanishes for every j — the index slip only shows when V̇ has a normal component.");
@@ -253,7 +253,7 @@ void hybridLaw(Context& ctx) {
   Wall << DM(N * p.A), p.X;  // W_j = N₆z_j for all j
   V6 Wk0 = V6::Zero();
   for (int j = 0; j < 6; ++j) Wk0 += Wd.dot(V6(full.col(j))) * V6(Wall.col(j));
-  recordFails(ctx, "τ^f with Σ_{j=k+1}, k read as 0: work of the commanded wrench on the freedoms", "E15.9", maxAbs(DV(p.A.transpose() * Wk0)), 1e-9);
+  ctx.checkPrintedFails("τ^f with Σ_{j=k+1}, k read as 0: work of the commanded wrench on the freedoms", "E15.9", maxAbs(DV(p.A.transpose() * Wk0)), 1e-9);
   (void)qee;
 }
 
@@ -393,18 +393,15 @@ void fig152(Context& ctx) {
 
 }  // namespace
 
-#define GF15(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-GF15("GF-15.4.2-constraints-natural-artificial", "Selection matrices depend on the frame (Lipkin–Duffy); AB does not", "GF §15.4.1–15.4.2", natural);
-GF15("GF-15.4.3-dual-bases-projection", "Dual bases: AB and XY idempotent and complementary (finding E15.15)", "GF §15.4.3", dualBases);
-GF15("GF-15.4.3-peg-in-hole", "Peg in hole: AB = diag(0,0,1,0,0,1), XY = diag(1,1,0,1,1,0) (erratum E15.7)", "GF §15.4.3", peg);
-GF15("GF-15.4.3-projection-transformation", "ÃB̃ = H⁻¹(AB)H, X̃Ỹ = Hᵀ(XY)H⁻ᵀ, shifted origin (errata E15.7, E15.8)", "GF §15.4.3", transformation);
-GF15("GF-15.4.4-second-fundamental-form", "N₆II(V,V): the reaction of a pinned body (erratum E15.10)", "GF §15.4.4", secondFundamental);
-GF15("GF-15.4.4-N6-orthonormal-projections", "AAᵀN₆ and XXᵀN₆⁻¹ = N₆YᵀY", "GF §15.4.4", n6Orthonormal);
-GF15("GF-15.4.4-constraint-multipliers", "λ_j = z_jᵀN₆V̇ + VᵀN₆[z_j, V] (erratum E15.9)", "GF §15.4.4", multipliers);
-GF15("GF-15.4.4-hybrid-control-law", "The hybrid law is frame-invariant (errata E15.9, E15.10)", "GF §15.4.4", hybridLaw);
-GF15("GF-15-fig-15.1", "Fig. 15.1: hybrid control architecture", "GF §15.4.1", fig151);
-GF15("GF-15-fig-15.2", "Fig. 15.2: hybrid control with curvature compensation", "GF §15.4.4", fig152);
-#undef GF15
+SOMA_STUDY_DOUBLE("GF-15.4.2-constraints-natural-artificial", "Selection matrices depend on the frame (Lipkin–Duffy); AB does not", "GF §15.4.1–15.4.2", natural);
+SOMA_STUDY_DOUBLE("GF-15.4.3-dual-bases-projection", "Dual bases: AB and XY idempotent and complementary (finding E15.15)", "GF §15.4.3", dualBases);
+SOMA_STUDY_DOUBLE("GF-15.4.3-peg-in-hole", "Peg in hole: AB = diag(0,0,1,0,0,1), XY = diag(1,1,0,1,1,0) (erratum E15.7)", "GF §15.4.3", peg);
+SOMA_STUDY_DOUBLE("GF-15.4.3-projection-transformation", "ÃB̃ = H⁻¹(AB)H, X̃Ỹ = Hᵀ(XY)H⁻ᵀ, shifted origin (errata E15.7, E15.8)", "GF §15.4.3", transformation);
+SOMA_STUDY_DOUBLE("GF-15.4.4-second-fundamental-form", "N₆II(V,V): the reaction of a pinned body (erratum E15.10)", "GF §15.4.4", secondFundamental);
+SOMA_STUDY_DOUBLE("GF-15.4.4-N6-orthonormal-projections", "AAᵀN₆ and XXᵀN₆⁻¹ = N₆YᵀY", "GF §15.4.4", n6Orthonormal);
+SOMA_STUDY_DOUBLE("GF-15.4.4-constraint-multipliers", "λ_j = z_jᵀN₆V̇ + VᵀN₆[z_j, V] (erratum E15.9)", "GF §15.4.4", multipliers);
+SOMA_STUDY_DOUBLE("GF-15.4.4-hybrid-control-law", "The hybrid law is frame-invariant (errata E15.9, E15.10)", "GF §15.4.4", hybridLaw);
+SOMA_STUDY_DOUBLE("GF-15-fig-15.1", "Fig. 15.1: hybrid control architecture", "GF §15.4.1", fig151);
+SOMA_STUDY_DOUBLE("GF-15-fig-15.2", "Fig. 15.2: hybrid control with curvature compensation", "GF §15.4.4", fig152);
 
 }  // namespace soma::studies::gf15::SOMA_UNITY_ID

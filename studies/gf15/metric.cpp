@@ -14,7 +14,7 @@ void invariantMetricIdentity(Context& ctx) {
   double anti = 0;
   for (const auto& c : structureConstants<double>()) anti = std::max(anti, maxAbs(DM(c + c.transpose())));
   ctx.checkResidual("C^k_ij + C^k_ji", anti, 0.0);
-  recordFails(ctx, "the Euclidean 6×6 metric I₆ is invariant (control, not an erratum)", "— control",
+  ctx.checkPrintedFails("the Euclidean 6×6 metric I₆ is invariant (control, not an erratum)", "— control",
               invarianceDefect<double>(M6::Identity()), 1e-12);
 }
 
@@ -74,7 +74,7 @@ void geodesicsSubgroups(Context& ctx) {
   const auto [e2, l2] = integrate([](double t) { return 2 * t; });
   ctx.checkNear("constant speed φ = t: ∫Q(γ̇,γ̇)dt = length² = 1", l1 * l1, e1, 1e-12);
   ctx.checkNear("reparametrised φ = t²: the length is unchanged (1)", 1.0, l2, 1e-8);
-  recordFails(ctx, "length²(γ) = ∫Q(γ̇, γ̇)dt for φ = t² (the energy is 4/3, the length² 1)", "E15.12", abs(e2 - l2 * l2), 1e-6);
+  ctx.checkPrintedFails("length²(γ) = ∫Q(γ̇, γ̇)dt for φ = t² (the energy is 4/3, the length² 1)", "E15.12", abs(e2 - l2 * l2), 1e-6);
   ctx.note("The energy ∫Q(γ̇,γ̇)dt has the same critical curves as the length only among constant-speed curves; "
            "the geodesics it yields are the constant-speed ones (E15.12, harmless).");
 }
@@ -141,7 +141,7 @@ void pullbackMetric(Context& ctx) {
   ctx.checkResidual("printed form in the ad representation: Ad·ad(s₄(0))·Ad⁻¹ = ad(s₄(θ))",
                     (conj - SE3Tangent<double>(V6(J.col(3))).ad()).cwiseAbs().maxCoeff(), 1e-14);
   // read with s_i(0) a vector and the trailing factors applied to it as well, Ad·Ad⁻¹·s = s(0) is wrong
-  recordFails(ctx, "s_i(θ) read as e^{θad}···e^{−θad} s_i(0) (the factors cancel: s_i(0))", "E15.3",
+  ctx.checkPrintedFails("s_i(θ) read as e^{θad}···e^{−θad} s_i(0) (the factors cancel: s_i(0))", "E15.3",
               (geo.homeScrews()[3] - V6(J.col(3))).cwiseAbs().maxCoeff(), 1e-6);
 }
 
@@ -213,7 +213,7 @@ void geodesicEquation(Context& ctx) {
     th += h / 6 * (v + 2 * v2 + 2 * v3 + v4);
     v += h / 6 * (a1 + 2 * a2 + 2 * a3 + a4);
   }
-  recordFails(ctx, "Σ_{i<j} θ̇_iθ̇_k[s_i, s_j] with k read as i: twist drift", "E15.2", (V6(geo.screws(th) * v) - X).cwiseAbs().maxCoeff(), 1e-6);
+  ctx.checkPrintedFails("Σ_{i<j} θ̇_iθ̇_k[s_i, s_j] with k read as i: twist drift", "E15.2", (V6(geo.screws(th) * v) - X).cwiseAbs().maxCoeff(), 1e-6);
   // near a singularity the W_i blow up: the library reports it instead of returning NaN
   auto s = geo.homeScrews();
   s[4] = s[3];
@@ -262,7 +262,7 @@ void christoffel(Context& ctx) {
                       return m;
                     }(),
                     1e-12);
-  recordFails(ctx, "\"the Christoffel symbol must be anti-symmetric\": Γ^i_jk = ½W_i([s_j, s_k]) for all j, k", "E15.1", errP / scale, 1e-3);
+  ctx.checkPrintedFails("\"the Christoffel symbol must be anti-symmetric\": Γ^i_jk = ½W_i([s_j, s_k]) for all j, k", "E15.1", errP / scale, 1e-3);
   ctx.note("Max |Γ| = " + toString(scale, 4) + ". Anti-symmetry holds only in the Lie-algebra (non-holonomic) frame; "
            "in joint coordinates a torsion-free connection has symmetric symbols, and the anti-symmetric part contracts to zero "
            "in Γ^i_jkθ̇_jθ̇_k.");
@@ -294,24 +294,21 @@ void maurerCartan(Context& ctx) {
     }
   ctx.checkResidual("ρ*Ω = Σ s_i ⊗ dθ_i: d(ρ*Ω)(∂_i, ∂_j) = ∂_is_j − ∂_js_i = [s_i, s_j] (finite differences)", err, 1e-9);
   ctx.checkResidual("left-invariant g⁻¹dg (body screws): ∂_ib_j − ∂_jb_i = −[b_i, b_j], i.e. dω = −½[ω, ω]", left, 1e-9);
-  recordFails(ctx, "\"left-invariant\" form with dΩ = +½[Ω, Ω] on body screws", "E15.14", leftPrinted, 1e-6);
+  ctx.checkPrintedFails("\"left-invariant\" form with dΩ = +½[Ω, Ω] on body screws", "E15.14", leftPrinted, 1e-6);
   ctx.note("With spatial screws s_i the pulled-back form is the right-invariant dg g⁻¹, for which the book's '+' is right "
            "(its final formula, line 9619, holds); the text calls it left-invariant.");
 }
 
 }  // namespace
 
-#define GF15(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-GF15("GF-15.1-invariant-metric-identity", "Bi-invariance C^l_ijQ_lk + C^l_ikQ_lj = 0 for Q0, Q_inf, Q_p", "GF §15.1", invariantMetricIdentity);
-GF15("GF-15.1-biinvariant-connection", "The metric connection ∇_iX_j = ½[X_i, X_j], Γ = −½C", "GF §15.1", biinvariantConnection);
-GF15("GF-15.1-geodesics-subgroups", "Geodesics are the one-parameter subgroups and their translates (erratum E15.12)", "GF §15.1", geodesicsSubgroups);
-GF15("GF-15.1-Qp-null-geodesics", "Q_p = αQ0 + βQ_inf: pitch −β/2α screws are null; all Q_p share geodesics", "GF §15.1", qpNullGeodesics);
-GF15("GF-15.1-joint-space-pullback-metric", "Q_p* = JᵀQ_pJ and the screw transport s_i(θ) (erratum E15.3)", "GF §15.1", pullbackMetric);
-GF15("GF-15.1-joint-space-covariant-derivative", "∇_UV in joint space: metric compatibility, parallel transport", "GF §15.1", covariantDerivative);
-GF15("GF-15.1-joint-space-geodesic-equation", "θ̈_i + Σ_{j<k}W_i([s_j,s_k])θ̇_jθ̇_k = 0 keeps the twist (erratum E15.2)", "GF §15.1", geodesicEquation);
-GF15("GF-15.1-joint-space-christoffel", "Γ^i_jk = ±½W_i([s_j,s_k]) is the Levi-Civita symbol, symmetric (erratum E15.1)", "GF §15.1", christoffel);
-GF15("GF-15.1-maurer-cartan-pullback", "ρ*Ω = Σs_i⊗dθ_i and d(ρ*Ω) = Σ_{i<j}[s_i,s_j]⊗dθ_i∧dθ_j (erratum E15.14)", "GF §15.1", maurerCartan);
-#undef GF15
+SOMA_STUDY_DOUBLE("GF-15.1-invariant-metric-identity", "Bi-invariance C^l_ijQ_lk + C^l_ikQ_lj = 0 for Q0, Q_inf, Q_p", "GF §15.1", invariantMetricIdentity);
+SOMA_STUDY_DOUBLE("GF-15.1-biinvariant-connection", "The metric connection ∇_iX_j = ½[X_i, X_j], Γ = −½C", "GF §15.1", biinvariantConnection);
+SOMA_STUDY_DOUBLE("GF-15.1-geodesics-subgroups", "Geodesics are the one-parameter subgroups and their translates (erratum E15.12)", "GF §15.1", geodesicsSubgroups);
+SOMA_STUDY_DOUBLE("GF-15.1-Qp-null-geodesics", "Q_p = αQ0 + βQ_inf: pitch −β/2α screws are null; all Q_p share geodesics", "GF §15.1", qpNullGeodesics);
+SOMA_STUDY_DOUBLE("GF-15.1-joint-space-pullback-metric", "Q_p* = JᵀQ_pJ and the screw transport s_i(θ) (erratum E15.3)", "GF §15.1", pullbackMetric);
+SOMA_STUDY_DOUBLE("GF-15.1-joint-space-covariant-derivative", "∇_UV in joint space: metric compatibility, parallel transport", "GF §15.1", covariantDerivative);
+SOMA_STUDY_DOUBLE("GF-15.1-joint-space-geodesic-equation", "θ̈_i + Σ_{j<k}W_i([s_j,s_k])θ̇_jθ̇_k = 0 keeps the twist (erratum E15.2)", "GF §15.1", geodesicEquation);
+SOMA_STUDY_DOUBLE("GF-15.1-joint-space-christoffel", "Γ^i_jk = ±½W_i([s_j,s_k]) is the Levi-Civita symbol, symmetric (erratum E15.1)", "GF §15.1", christoffel);
+SOMA_STUDY_DOUBLE("GF-15.1-maurer-cartan-pullback", "ρ*Ω = Σs_i⊗dθ_i and d(ρ*Ω) = Σ_{i<j}[s_i,s_j]⊗dθ_i∧dθ_j (erratum E15.14)", "GF §15.1", maurerCartan);
 
 }  // namespace soma::studies::gf15::SOMA_UNITY_ID

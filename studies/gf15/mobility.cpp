@@ -117,7 +117,7 @@ void totallyGeodesic(Context& ctx) {
   ctx.checkResidual("log ρ(θ) ∈ Δ₁ (BCH: the image is the subgroup)", l1, 1e-13);
   const auto [n2, l2] = outOfSpan(skew);
   ctx.checkEqual("three mutually skew revolutes: not a subalgebra", 0, isSubalgebra(skew) ? 1 : 0);
-  recordFails(ctx, "control: ∇_UV tangent for a non-subalgebra", "— control", n2, 1e-6);
+  ctx.checkPrintedFails("control: ∇_UV tangent for a non-subalgebra", "— control", n2, 1e-6);
   // the proof's ∇_UV at line 9674 equals the §15.1 formula (relabelled); E15.13 (θ̇^1 for θ̇_1) is OCR
   const JointSpaceGeometry<double> geo(randomScrews(g, 4));
   const DV th = rvec(g, 4), td = rvec(g, 4), pd = rvec(g, 4), pdd = rvec(g, 4);
@@ -649,17 +649,14 @@ void tableFigure(Context& ctx) {
 
 }  // namespace
 
-#define GF15(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-GF15("GF-15.2-mobility-definitions", "Mobility vs infinitesimal mobility: the flat 4-bar (0 vs 2)", "GF §15.2", definitions);
-GF15("GF-15.2-loop-equation-kutzbach", "Loop equation and Kutzbach–Grübler m = n − 6 (7R mobile, 5R rigid)", "GF §15.2", kutzbach);
-GF15("GF-15.2-completion-group-mobility", "m = n − dim Δ∞: planar and spherical 4R; Bennett the exception", "GF §15.2", completion);
-GF15("GF-15.2-totally-geodesic-subalgebra", "Subalgebra ⟺ totally geodesic image (line 9674, erratum E15.13)", "GF §15.2", totallyGeodesic);
-GF15("GF-15.2-table-15.1", "Table 15.1: the ten screw systems guaranteeing full-cycle mobility are subalgebras", "GF §15.2", table);
-GF15("GF-15.2-singular-robot-mobility", "A 6R held at its end effector: singular iff infinitesimally mobile; self-motions", "GF §15.2", singularRobot);
-GF15("GF-15-fig-bennett", "Derived figure: Bennett's overconstrained 4R in motion; the flat 4-bar (mobility 0, infinitesimal 2)",
+SOMA_STUDY_DOUBLE("GF-15.2-mobility-definitions", "Mobility vs infinitesimal mobility: the flat 4-bar (0 vs 2)", "GF §15.2", definitions);
+SOMA_STUDY_DOUBLE("GF-15.2-loop-equation-kutzbach", "Loop equation and Kutzbach–Grübler m = n − 6 (7R mobile, 5R rigid)", "GF §15.2", kutzbach);
+SOMA_STUDY_DOUBLE("GF-15.2-completion-group-mobility", "m = n − dim Δ∞: planar and spherical 4R; Bennett the exception", "GF §15.2", completion);
+SOMA_STUDY_DOUBLE("GF-15.2-totally-geodesic-subalgebra", "Subalgebra ⟺ totally geodesic image (line 9674, erratum E15.13)", "GF §15.2", totallyGeodesic);
+SOMA_STUDY_DOUBLE("GF-15.2-table-15.1", "Table 15.1: the ten screw systems guaranteeing full-cycle mobility are subalgebras", "GF §15.2", table);
+SOMA_STUDY_DOUBLE("GF-15.2-singular-robot-mobility", "A 6R held at its end effector: singular iff infinitesimally mobile; self-motions", "GF §15.2", singularRobot);
+SOMA_STUDY_DOUBLE("GF-15-fig-bennett", "Derived figure: Bennett's overconstrained 4R in motion; the flat 4-bar (mobility 0, infinitesimal 2)",
      "GF §15.2", bennettFigure);
-GF15("GF-15-fig-table-15.1", "Derived figure: the ten subgroups of Table 15.1 drawn as their joint sets", "GF §15.2", tableFigure);
-#undef GF15
+SOMA_STUDY_DOUBLE("GF-15-fig-table-15.1", "Derived figure: the ten subgroups of Table 15.1 drawn as their joint sets", "GF §15.2", tableFigure);
 
 }  // namespace soma::studies::gf15::SOMA_UNITY_ID

@@ -213,17 +213,14 @@ void kineticEnergyStudy(Context& c) {
 
 }  // namespace
 
-#define SB_STUDY(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-SB_STUDY("SB-5-coscrew-element-bar-involution", "Co-screws as a-bivectors; the bar involution; ḡ P ḡ*", "SB §5", coScrewBar);
-SB_STUDY("SB-5-Q0-evaluation", "P(s) = P ∨ (Q0 ∧ s) = (P ∧ Q0) ∨ s", "SB §5", q0Evaluation);
-SB_STUDY("SB-5-Q0-invariance", "Q0 invariant under g ḡ, not under g or ḡ alone", "SB §5", q0Invariance);
-SB_STUDY("SB-5-diagonal-inertia-element", "The diagonal inertia as a grade-4 element", "SB §5", diagonalInertia);
-SB_STUDY("SB-5-momentum-A-shuffle", "P = A ∨ (N ∧ s); A invariant", "SB §5", momentumA);
-SB_STUDY("SB-5-wedge-shuffle-covariance", "h(a∧b)h* and h(a∨b)h* covariance; det lemma", "SB §5", covariance);
-SB_STUDY("SB-5-inertia-transformation", "N → (gḡ) N (gḡ)* equals H^{-T} N H^{-1}", "SB §5", inertiaTransformation);
-SB_STUDY("SB-5-translated-inertia-example", "Diagonal inertia translated by t_x (printed expansion and matrix)", "SB §5", translatedExample);
-SB_STUDY("SB-5-kinetic-energy", "E_k = ½ s̄ ∨ (N ∧ s)", "SB §5", kineticEnergyStudy);
-#undef SB_STUDY
+SOMA_STUDY_DOUBLE("SB-5-coscrew-element-bar-involution", "Co-screws as a-bivectors; the bar involution; ḡ P ḡ*", "SB §5", coScrewBar);
+SOMA_STUDY_DOUBLE("SB-5-Q0-evaluation", "P(s) = P ∨ (Q0 ∧ s) = (P ∧ Q0) ∨ s", "SB §5", q0Evaluation);
+SOMA_STUDY_DOUBLE("SB-5-Q0-invariance", "Q0 invariant under g ḡ, not under g or ḡ alone", "SB §5", q0Invariance);
+SOMA_STUDY_DOUBLE("SB-5-diagonal-inertia-element", "The diagonal inertia as a grade-4 element", "SB §5", diagonalInertia);
+SOMA_STUDY_DOUBLE("SB-5-momentum-A-shuffle", "P = A ∨ (N ∧ s); A invariant", "SB §5", momentumA);
+SOMA_STUDY_DOUBLE("SB-5-wedge-shuffle-covariance", "h(a∧b)h* and h(a∨b)h* covariance; det lemma", "SB §5", covariance);
+SOMA_STUDY_DOUBLE("SB-5-inertia-transformation", "N → (gḡ) N (gḡ)* equals H^{-T} N H^{-1}", "SB §5", inertiaTransformation);
+SOMA_STUDY_DOUBLE("SB-5-translated-inertia-example", "Diagonal inertia translated by t_x (printed expansion and matrix)", "SB §5", translatedExample);
+SOMA_STUDY_DOUBLE("SB-5-kinetic-energy", "E_k = ½ s̄ ∨ (N ∧ s)", "SB §5", kineticEnergyStudy);
 
 }  // namespace soma::studies::sb::SOMA_UNITY_ID

@@ -302,14 +302,11 @@ void claims(Context& c) {
 
 }  // namespace
 
-#define SB_STUDY(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-SB_STUDY("SB-6-coadjoint-action", "{s, P} = ½(s̄P − P s̄)", "SB §6", coadjointAction);
-SB_STUDY("SB-6-inertia-derivative", "dN/dt = ½(sN − Ns) + ½(s̄N − Ns̄)", "SB §6", inertiaDerivativeStudy);
-SB_STUDY("SB-6-equation-of-motion", "dP/dt = W in Cl(0,6,2) = 6×6 equation; free body drift in both formulations",
+SOMA_STUDY_DOUBLE("SB-6-coadjoint-action", "{s, P} = ½(s̄P − P s̄)", "SB §6", coadjointAction);
+SOMA_STUDY_DOUBLE("SB-6-inertia-derivative", "dN/dt = ½(sN − Ns) + ½(s̄N − Ns̄)", "SB §6", inertiaDerivativeStudy);
+SOMA_STUDY_DOUBLE("SB-6-equation-of-motion", "dP/dt = W in Cl(0,6,2) = 6×6 equation; free body drift in both formulations",
          "SB §6", equationOfMotion);
-SB_STUDY("SB-6-E-form", "N ∧ ṡ + ½((s̄N − Ns̄) ∧ s) = W E", "SB §6", eForm);
-SB_STUDY("SB-7-claims", "Sym² of the adjoint inside Cl(0,6,2); stiffness; even subalgebra", "SB §7", claims);
-#undef SB_STUDY
+SOMA_STUDY_DOUBLE("SB-6-E-form", "N ∧ ṡ + ½((s̄N − Ns̄) ∧ s) = W E", "SB §6", eForm);
+SOMA_STUDY_DOUBLE("SB-7-claims", "Sym² of the adjoint inside Cl(0,6,2); stiffness; even subalgebra", "SB §7", claims);
 
 }  // namespace soma::studies::sb::SOMA_UNITY_ID

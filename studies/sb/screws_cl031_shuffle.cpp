@@ -283,17 +283,14 @@ void shuffleExampleCl062(Context& c) {
 
 }  // namespace
 
-#define SB_STUDY(ID, TITLE, SRC, FN) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SRC, .chapter = kChapter, .scalarGeneric = false, .run = FN})
-SB_STUDY("SB-2-screws-coscrews-transform", "Screws s → Hs, co-screws P → H^{-T}P, pairing and E_K", "SB §2", screwsCoScrews);
-SB_STUDY("SB-2-inertia-coadjoint-eom", "6×6 inertia, its transformation, {s, P}, N ṡ + {s, Ns} = W", "SB §2", inertiaCoadjointEom);
-SB_STUDY("SB-3-cl031-rotations-translations", "Rotations and translations in Cl(0,3,1)", "SB §3", rotationsTranslations);
-SB_STUDY("SB-3-rigid-motion-element-study-conditions", "g g* = 1 gives the Study conditions", "SB §3", studyConditions);
-SB_STUDY("SB-3-screw-bivector-lie-bracket", "Screws as bivectors; Lie bracket = half commutator", "SB §3", lieBracket);
-SB_STUDY("SB-3-exponential-dexp", "g = e^{z/2}; ġ = ½ s g with s = dexp(z) ż", "SB §3", exponentialDexp);
-SB_STUDY("SB-4-shuffle-definition", "The shuffle product by SB's Grassmann–Cayley definition", "SB §4", shuffleDefinition);
-SB_STUDY("SB-4-shuffle-example-cl031", "e₁e₂ ∨ e₃e = 1 in Cl(0,3,1)", "SB §4", shuffleExampleCl031);
-SB_STUDY("SB-4-shuffle-example-cl062", "a₁a₂a₃a ∨ a₃a₁e₁e₂e₃e = a₃a₁", "SB §4", shuffleExampleCl062);
-#undef SB_STUDY
+SOMA_STUDY_DOUBLE("SB-2-screws-coscrews-transform", "Screws s → Hs, co-screws P → H^{-T}P, pairing and E_K", "SB §2", screwsCoScrews);
+SOMA_STUDY_DOUBLE("SB-2-inertia-coadjoint-eom", "6×6 inertia, its transformation, {s, P}, N ṡ + {s, Ns} = W", "SB §2", inertiaCoadjointEom);
+SOMA_STUDY_DOUBLE("SB-3-cl031-rotations-translations", "Rotations and translations in Cl(0,3,1)", "SB §3", rotationsTranslations);
+SOMA_STUDY_DOUBLE("SB-3-rigid-motion-element-study-conditions", "g g* = 1 gives the Study conditions", "SB §3", studyConditions);
+SOMA_STUDY_DOUBLE("SB-3-screw-bivector-lie-bracket", "Screws as bivectors; Lie bracket = half commutator", "SB §3", lieBracket);
+SOMA_STUDY_DOUBLE("SB-3-exponential-dexp", "g = e^{z/2}; ġ = ½ s g with s = dexp(z) ż", "SB §3", exponentialDexp);
+SOMA_STUDY_DOUBLE("SB-4-shuffle-definition", "The shuffle product by SB's Grassmann–Cayley definition", "SB §4", shuffleDefinition);
+SOMA_STUDY_DOUBLE("SB-4-shuffle-example-cl031", "e₁e₂ ∨ e₃e = 1 in Cl(0,3,1)", "SB §4", shuffleExampleCl031);
+SOMA_STUDY_DOUBLE("SB-4-shuffle-example-cl062", "a₁a₂a₃a ∨ a₃a₁e₁e₂e₃e = a₃a₁", "SB §4", shuffleExampleCl062);
 
 }  // namespace soma::studies::sb::SOMA_UNITY_ID

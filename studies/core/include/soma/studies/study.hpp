@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace soma::studies {
@@ -51,6 +52,15 @@ class Context {
   /// An exact check (a count, a classification): passes when expected == got.
   bool checkEqual(const std::string& name, long long expected, long long got);
   bool checkEqual(const std::string& name, const std::string& expected, const std::string& got);
+  /// The book's printed formula fails, as its erratum says: passes when `residual` exceeds
+  /// `threshold` (the tolerance the corrected formula meets). Recorded as "<name> [as printed]",
+  /// expected "fails (erratum <erratum>)", got "residual <value>".
+  template <class S>
+  bool checkPrintedFails(const std::string& name, const std::string& erratum, const S& residual,
+                         const std::type_identity_t<S>& threshold) {
+    return record(name + " [as printed]", "fails (erratum " + erratum + ")", "residual " + toString(residual, 6),
+                  toDouble(residual), toDouble(threshold), isFinite(residual) && residual > threshold);
+  }
   /// A check whose error the study computed itself (e.g. a printed formula failing by design,
   /// recorded as `expected: "fails (erratum E4.8)"`).
   bool record(const std::string& name, const std::string& expected, const std::string& got,
@@ -115,9 +125,20 @@ StudyResult runStudy(const Study& s, ScalarKind scalar, const std::filesystem::p
 
 #define SOMA_STUDY_CONCAT2(a, b) a##b
 #define SOMA_STUDY_CONCAT(a, b) SOMA_STUDY_CONCAT2(a, b)
-/// Register a study at static-initialisation time:
+/// Register a study at static-initialisation time. The general form names every field:
 ///   SOMA_STUDY({.id = "GF-2.1-U1-unit-complex", .title = ..., .source = "GF §2.1",
 ///               .chapter = "GF 2 — Lie groups", .scalarGeneric = true, .run = [](Context& c){...}});
 #define SOMA_STUDY(...)                                                                   \
   static const ::soma::studies::Registrar SOMA_STUDY_CONCAT(somaStudyRegistrar_, __COUNTER__){ \
       ::soma::studies::Study __VA_ARGS__}
+/// The short form, in a chapter file that defines `kChapter` (its report section), for a study
+/// whose body FN(Context&) (a function or a lambda) runs in double:
+///   SOMA_STUDY_DOUBLE("GF-6.1-meet-condition", "Two lines meet iff …", "GF §6.1", meetCondition);
+#define SOMA_STUDY_DOUBLE(ID, TITLE, SOURCE, ...) \
+  SOMA_STUDY({.id = ID, .title = TITLE, .source = SOURCE, .chapter = kChapter, .scalarGeneric = false, .run = __VA_ARGS__})
+/// The short form for a study whose body is the function template FN<S>(Context&), run in the
+/// scalar asked for (--scalar):
+///   SOMA_STUDY_SCALAR("GF-4.4.2-se3-log", "…", "GF §4.4.2", se3Log);
+#define SOMA_STUDY_SCALAR(ID, TITLE, SOURCE, FN)                                                          \
+  SOMA_STUDY({.id = ID, .title = TITLE, .source = SOURCE, .chapter = kChapter, .scalarGeneric = true, \
+              .run = [](::soma::studies::Context& c) { ::soma::withScalar(c.scalar(), [&]<class S>() { FN<S>(c); }); }})
