@@ -5,6 +5,7 @@
 #include "soma/geometry/serial/closed_form_ik.hpp"
 #include "soma/geometry/cuspidal/witness6r.hpp"
 #include "soma/render/plot.hpp"
+#include "soma/geometry/serial/example_robots.hpp"
 #include "soma/render/render.hpp"
 #include "soma/studies/workspace_command.hpp"
 #include "soma/studies/cuspidal_command.hpp"
@@ -403,26 +404,12 @@ void workspaceStudy(Context& c) {
 // 6R witness search: PUMA 560 (not cuspidal, det J factors) and a cuspidal 6R (the orthogonal
 // arm + spherical wrist, the IRB 6400C architecture).
 void witness6RStudy(Context& c) {
-  auto dh6 = [](const std::array<std::array<double, 3>, 6>& rows, const std::string& name) {
-    std::vector<DHRow<S>> r;
-    for (const auto& x : rows) {
-      DHRow<S> d;
-      d.a = x[0];
-      d.alpha = x[1];
-      d.d = x[2];
-      r.push_back(d);
-    }
-    return SerialRobot<S>::fromDH(r, DHConvention::Standard, SE3<S>(), SE3<S>(), name);
-  };
-  const double h = kPi / 2;
-  const SerialRobot<S> puma = dh6({{{0, h, 0}, {0.4318, 0, 0}, {0.0203, -h, 0.15005}, {0, h, 0.4318}, {0, -h, 0}, {0, 0, 0.05625}}},
-                                  "PUMA 560");
+  const SerialRobot<S> puma = puma560Robot<S>();
   const Witness6R wp = findWitness6R(puma, 2, 0.1);
   c.checkEqual("PUMA 560: no witness after 2 poses (it is not cuspidal; the search says 'not a proof')", 1,
                !wp.found && wp.note.find("not a proof") != std::string::npos);
   c.note(fmt::format("PUMA: {} postures, {} same-sign pairs planned, {:.1f} s", wp.posturesSeen, wp.pairsTried, wp.seconds));
-  const SerialRobot<S> cusp6 = dh6({{{1, -h, 0}, {2, h, 1}, {1.5, 0, 0}, {0, -h, 0}, {0, h, 0}, {0, 0, 0.3}}},
-                                   "orthogonal arm + spherical wrist");
+  const SerialRobot<S> cusp6 = orthogonalWristRobot<S>();
   const Witness6R w = findWitness6R(cusp6, 8, 0.5);
   c.checkEqual("orthogonal arm (1, 2, 1.5, 1, 0) + spherical wrist: a witness found", 1, w.found);
   if (!w.found) return;

@@ -3,7 +3,7 @@
 // det J and the posture, the revolute-joint exponential, the 3R arm's quartic, θ2 recovery
 // (E5.6), the elbow manipulator's 8 postures, and the finger/PUMA example (E5.4–E5.5).
 #include "soma/geometry/serial/closed_form_ik.hpp"
-#include "soma/studies/example_robots.hpp"
+#include "soma/geometry/serial/example_robots.hpp"
 #include "soma/studies/study.hpp"
 
 #include <fmt/format.h>

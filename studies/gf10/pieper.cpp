@@ -3,7 +3,7 @@
 // closing remark on singularities, and Fig. 10.2 (all postures of the T³ for one pose).
 #include "soma/geometry/serial/closed_form_ik.hpp"
 #include "soma/render/render.hpp"
-#include "soma/studies/example_robots.hpp"
+#include "soma/geometry/serial/example_robots.hpp"
 #include "soma/studies/study.hpp"
 
 #include <fmt/format.h>
@@ -16,19 +16,6 @@ namespace {
 
 using S = double;
 namespace rd = soma::render;
-
-SerialRobot<S> t3Robot(double l1 = 0.9, double l2 = 0.7, double l3 = 0.25) {
-  std::vector<SerialJoint<S>> js(6);
-  const Vec3<S> i = Vec3<S>::UnitX(), j = Vec3<S>::UnitY(), k = Vec3<S>::UnitZ();
-  js[0].axis = k;
-  js[1].axis = i;
-  js[2].axis = i, js[2].point = l1 * k;
-  js[3].axis = i, js[3].point = (l1 + l2) * k;
-  js[4].axis = j, js[4].point = (l1 + l2 + l3) * k;
-  js[5].axis = k, js[5].point = (l1 + l2 + l3) * k;  // on the tool axis (for drawing)
-  return SerialRobot<S>::fromPOE(js, SE3<S>(SO3<S>(), Vec3<S>((l1 + l2 + l3) * k)), "T3");
-}
-
 
 JointVector<S> randomQ(std::mt19937_64& g, int n) {
   std::uniform_real_distribution<double> u(-3, 3);
@@ -83,7 +70,7 @@ void recordSweep(Context& c, const std::string& what, const Sweep& s, int maxCou
 
 // GF §10.3, GF-10.3-pieper-theorem
 void pieperTheorem(Context& c) {
-  const Sweep t3 = sweep(t3Robot(), 200, 101, 8), pm = sweep(puma560Robot<S>(), 200, 102, 8);
+  const Sweep t3 = sweep(t3Robot<S>(), 200, 101, 8), pm = sweep(puma560Robot<S>(), 200, 102, 8);
   recordSweep(c, "T³ (axes 2-4 parallel)", t3, 8);
   recordSweep(c, "PUMA 560 (axes 4-6 meet)", pm, 8);
   c.checkEqual("T³: 8 postures occur", 1, t3.counts.count(8) ? 1 : 0);
@@ -179,7 +166,7 @@ void pumaExample(Context& c) {
 
 // GF §10.3, GF-10.3-closing-remarks: singular ⇔ joint screws dependent (a reciprocal screw exists)
 void closingRemarks(Context& c) {
-  const auto robot = t3Robot();
+  const auto robot = t3Robot<S>();
   JointVector<S> q(6);
   q << 0.3, -0.6, 0.9, 0.4, pi<S>() / 2, 0.2;  // θ5 = π/2: axis 6 parallel to axes 2-4
   const auto m = singularityMeasures(robot, q);
@@ -193,7 +180,7 @@ void closingRemarks(Context& c) {
 
 // GF Fig. 10.2, GF-10.3.2-fig10.2-T3: all postures of the T³ for one pose, drawn together.
 void t3Figure(Context& c) {
-  const auto robot = t3Robot();
+  const auto robot = t3Robot<S>();
   // The catalogue's instance has 4 postures; draw the first pose of a fixed-seed sequence with 8.
   std::mt19937_64 g(107);
   JointVector<S> q = randomQ(g, 6);

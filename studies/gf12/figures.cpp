@@ -5,7 +5,7 @@
 #include "soma/geometry/statics/wrist_sensor.hpp"
 #include "soma/geometry/statics/robot_statics.hpp"
 #include "soma/render/render.hpp"
-#include "soma/studies/example_robots.hpp"
+#include "soma/geometry/serial/example_robots.hpp"
 #include "soma/studies/study.hpp"
 
 #include <cmath>

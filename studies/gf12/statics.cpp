@@ -7,7 +7,7 @@
 #include "soma/geometry/statics/robot_statics.hpp"
 #include "soma/geometry/statics/wrench.hpp"
 #include "soma/geometry/statics/wrist_sensor.hpp"
-#include "soma/studies/example_robots.hpp"
+#include "soma/geometry/serial/example_robots.hpp"
 #include "soma/studies/study.hpp"
 
 #include <cmath>

@@ -6,7 +6,7 @@
 #include "soma/geometry/dynamics/robot_dynamics.hpp"
 #include "soma/geometry/dynamics/serial_dynamics.hpp"
 #include "soma/geometry/dynamics/spatial_inertia.hpp"
-#include "soma/studies/example_robots.hpp"
+#include "soma/geometry/serial/example_robots.hpp"
 #include "soma/studies/study.hpp"
 
 #include <cmath>
