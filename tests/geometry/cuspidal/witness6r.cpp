@@ -2,6 +2,7 @@
 // which is not a proof, and the answer says so) and a cuspidal one by construction (Wenger's
 // cuspidal orthogonal arm + a spherical wrist: a witness is found and re-checked here).
 #include "soma/geometry/cuspidal/witness6r.hpp"
+#include "soma/geometry/serial/example_robots.hpp"
 
 #include "soma/algebra/errors.hpp"
 #include "support/scalars.hpp"
@@ -12,30 +13,8 @@ namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (t
 
 using namespace soma;
 
-namespace {
-constexpr double kHalfPi = 1.57079632679489661923;
-SerialRobot<double> dh6(const std::array<std::array<double, 3>, 6>& rows) {
-  std::vector<DHRow<double>> r;
-  for (const auto& x : rows) {
-    DHRow<double> d;
-    d.a = x[0];
-    d.alpha = x[1];
-    d.d = x[2];
-    r.push_back(d);
-  }
-  return SerialRobot<double>::fromDH(r);
-}
-SerialRobot<double> puma() {
-  return dh6({{{0, kHalfPi, 0}, {0.4318, 0, 0}, {0.0203, -kHalfPi, 0.15005}, {0, kHalfPi, 0.4318}, {0, -kHalfPi, 0},
-               {0, 0, 0.05625}}});
-}
-SerialRobot<double> orthogonalWithWrist() {
-  return dh6({{{1, -kHalfPi, 0}, {2, kHalfPi, 1}, {1.5, 0, 0}, {0, -kHalfPi, 0}, {0, kHalfPi, 0}, {0, 0, 0.3}}});
-}
-}  // namespace
-
 TEST_CASE("6R witness: PUMA 560 (not cuspidal) — none found, not a proof", "[cuspidal][ompl][6r]") {
-  const Witness6R w = findWitness6R(puma(), 1, 0.1);
+  const Witness6R w = findWitness6R(puma560Robot<double>(), 1, 0.1);
   CHECK_FALSE(w.found);
   CHECK(w.ikMethod == "pieper");
   CHECK(w.posesTried == 1);
@@ -45,7 +24,7 @@ TEST_CASE("6R witness: PUMA 560 (not cuspidal) — none found, not a proof", "[c
 }
 
 TEST_CASE("6R witness: orthogonal cuspidal arm + spherical wrist — found and re-checked", "[cuspidal][ompl][6r]") {
-  const SerialRobot<double> robot = orthogonalWithWrist();
+  const SerialRobot<double> robot = orthogonalWristRobot<double>();
   const Witness6R w = findWitness6R(robot, 8, 0.5);
   REQUIRE(w.found);
   // Both ends reach the same pose and are different postures.
@@ -66,7 +45,7 @@ TEST_CASE("6R witness: bad input", "[cuspidal][6r]") {
   DHRow<double> r;
   r.a = 1;
   CHECK_THROWS_WITH(findWitness6R(SerialRobot<double>::fromDH({r, r, r, r})), Catch::Contains("has 4 joints"));
-  CHECK_THROWS_WITH(findWitness6R(puma(), 0), Catch::Contains("at least 1"));
+  CHECK_THROWS_WITH(findWitness6R(puma560Robot<double>(), 0), Catch::Contains("at least 1"));
 }
 
 }  // namespace SOMA_UNITY_ID

@@ -1,5 +1,6 @@
 // Closed-form IK: 3R wrists (GF §5.1), 3R arms (GF §5.2), Pieper robots (GF §10.3).
 #include "soma/geometry/serial/closed_form_ik.hpp"
+#include "soma/geometry/serial/example_robots.hpp"
 
 #include "soma/algebra/errors.hpp"
 #include "support/scalars.hpp"
@@ -28,32 +29,6 @@ template <class S> bool containsPosture(const Solution<S>& sol, const JointVecto
     if (same) return true;
   }
   return false;
-}
-
-template <class S> SerialRobot<S> puma560(const S& scale = S(1)) {
-  std::vector<DHRow<S>> rows(6);
-  const S h = pi<S>() / S(2);
-  rows[0] = {JointType::Revolute, S(0), h, S(0), S(0)};
-  rows[1] = {JointType::Revolute, S(4318) / S(10000) * scale, S(0), S(0), S(0)};
-  rows[2] = {JointType::Revolute, S(203) / S(10000) * scale, -h, S(15005) / S(100000) * scale, S(0)};
-  rows[3] = {JointType::Revolute, S(0), h, S(4318) / S(10000) * scale, S(0)};
-  rows[4] = {JointType::Revolute, S(0), -h, S(0), S(0)};
-  rows[5] = {JointType::Revolute, S(0), S(0), S(5625) / S(100000) * scale, S(0)};
-  return SerialRobot<S>::fromDH(rows, DHConvention::Standard, SE3<S>(), SE3<S>(), "PUMA 560");
-}
-
-/// T³-like robot (GF §10.3.2, Fig. 10.2): joints 2, 3, 4 parallel, POE home along z.
-template <class S> SerialRobot<S> t3Robot() {
-  const S l1 = S(9) / S(10), l2 = S(7) / S(10), l3 = S(1) / S(4);
-  std::vector<SerialJoint<S>> js(6);
-  const Vec3<S> i = Vec3<S>::UnitX(), j = Vec3<S>::UnitY(), k = Vec3<S>::UnitZ();
-  js[0].axis = k;
-  js[1].axis = i;
-  js[2].axis = i, js[2].point = l1 * k;
-  js[3].axis = i, js[3].point = (l1 + l2) * k;
-  js[4].axis = j, js[4].point = (l1 + l2 + l3) * k;
-  js[5].axis = k;
-  return SerialRobot<S>::fromPOE(js, SE3<S>(SO3<S>(), Vec3<S>((l1 + l2 + l3) * k)), "T3");
 }
 
 template <class S> JointVector<S> randomQ(std::mt19937_64& g, int n) {
@@ -191,7 +166,7 @@ TEMPLATE_TEST_CASE("closed form: PUMA 560, random poses, up to 8 postures (GF §
                    "[serial][ik][pieper]", SOMA_TEST_SCALARS) {
   using S = TestType;
   auto& g = rng(23);
-  const auto robot = puma560<S>();
+  const auto robot = puma560Robot<S>();
   REQUIRE(classifyRobot(robot) == IkMethod::Pieper);
   const int trials = std::is_same_v<S, mpreal> ? 2 : 30;
   int eight = 0;
@@ -247,7 +222,7 @@ TEMPLATE_TEST_CASE("closed form: Pieper triples in every position (reversed robo
 TEST_CASE("closed form: PUMA extremes — wrist singular, elbow straight, angles 0 and π, lengths 1e±8",
           "[serial][ik][pieper][extreme]") {
   using S = double;
-  const auto robot = puma560<S>();
+  const auto robot = puma560Robot<S>();
   JointVector<S> q(6);
   q << 0.3, -0.8, 0.4, 1.1, 0.0, -0.6;  // θ5 = 0: axes 4 and 6 coincide
   auto sol = solvePieper(robot, robot.fk(q));
@@ -259,14 +234,14 @@ TEST_CASE("closed form: PUMA extremes — wrist singular, elbow straight, angles
   q << pi<S>(), -pi<S>() / 2, pi<S>(), pi<S>(), 0.5, pi<S>();  // angles π
   roundTrip(robot, q, IkMethod::Pieper, 8, 1e-12);
   for (double s : {1e-8, 1e8}) {
-    const auto scaled = puma560<S>(s);
+    const auto scaled = puma560Robot<S>(s);
     q << 0.3, -0.8, 0.4, 1.1, 0.7, -0.6;
     roundTrip(scaled, q, IkMethod::Pieper, 8, 1e-11);
   }
 }
 
 TEST_CASE("closed form: bad robots and methods", "[serial][ik][errors]") {
-  const auto robot = puma560<double>();
+  const auto robot = puma560Robot<double>();
   std::vector<SerialJoint<double>> js(6);
   auto& g = rng(26);
   for (auto& j : js) {

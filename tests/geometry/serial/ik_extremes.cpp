@@ -4,6 +4,7 @@
 // of the classification threshold, and random joints → pose → IK on a robot with 16 real
 // postures. Closed forms (GF §5.1, §10.3) and the general 6R (GF §11.5).
 #include "soma/geometry/serial/closed_form_ik.hpp"
+#include "soma/geometry/serial/example_robots.hpp"
 #include "soma/geometry/serial/general_6r.hpp"
 
 #include "support/scalars.hpp"
@@ -36,20 +37,6 @@ template <class S> S nearest(const Solution<S>& sol, const JointVector<S>& q) {
   S best = S(10);
   for (const auto& p : sol.postures) best = std::min<S>(best, angleGap(p, q));
   return best;
-}
-
-/// Standard DH PUMA 560 with lengths times `scale`, and a wrist offset a5 = `wristOffset`·scale
-/// (0: axes 4-6 meet, a Pieper robot).
-template <class S> SerialRobot<S> puma(const S& scale = S(1), const S& wristOffset = S(0)) {
-  std::vector<DHRow<S>> rows(6);
-  const S h = pi<S>() / S(2);
-  rows[0] = {JointType::Revolute, S(0), h, S(0), S(0)};
-  rows[1] = {JointType::Revolute, S(4318) / S(10000) * scale, S(0), S(0), S(0)};
-  rows[2] = {JointType::Revolute, S(203) / S(10000) * scale, -h, S(15005) / S(100000) * scale, S(0)};
-  rows[3] = {JointType::Revolute, S(0), h, S(4318) / S(10000) * scale, S(0)};
-  rows[4] = {JointType::Revolute, wristOffset * scale, -h, S(0), S(0)};
-  rows[5] = {JointType::Revolute, S(0), S(0), S(5625) / S(100000) * scale, S(0)};
-  return SerialRobot<S>::fromDH(rows, DHConvention::Standard);
 }
 
 /// UR-type arm: joints 2, 3, 4 parallel (α2 = α3 = 0), α3 replaced by `tilt`.
@@ -133,11 +120,11 @@ TEMPLATE_TEST_CASE("IK extremes: lengths 1e-8 and 1e8 — the same postures, rel
     for (int i = 0; i < 6; ++i) q(i) = uniform<S>(g, -3, 3);
     // Pieper (PUMA 560) and the general 6R (Manseur–Doty arm) at scale 1 and 1e∓8.
     for (int kind = 0; kind < 2; ++kind) {
-      const auto base = kind == 0 ? puma<S>() : manseurDoty<S>();
+      const auto base = kind == 0 ? puma560Robot<S>() : manseurDoty<S>();
       const Solution<S> ref = roundTrip(base, q, tol4096<S>(), S(1e-7));
       for (const S s : {S(1e-8), S(1e8)}) {
         INFO("kind " << kind << " scale " << toDouble(s) << " trial " << trial);
-        const auto scaled = kind == 0 ? puma<S>(s) : manseurDoty<S>(s);
+        const auto scaled = kind == 0 ? puma560Robot<S>(s) : manseurDoty<S>(s);
         CHECK(scaled.lengthScale() == Approx(toDouble(s * base.lengthScale())).epsilon(1e-12));
         // The scaled pose is the pose of the scaled robot: T(s) = (R, s t).
         const SE3<S> T = base.fk(q);
@@ -164,14 +151,14 @@ TEMPLATE_TEST_CASE("IK extremes: joint angles at 0 and π", "[serial][ik][extrem
     roundTrip(manseurDoty<S>(), q, tol4096<S>(), S(1e-7));
     JointVector<S> qp = q;
     qp(4) = S(1) / S(2);  // off the wrist singularity
-    roundTrip(puma<S>(), qp, tol4096<S>(), S(1e-9));
+    roundTrip(puma560Robot<S>(), qp, tol4096<S>(), S(1e-9));
   }
 }
 
 TEST_CASE("IK extremes: PUMA wrist singularity (θ5 → 0) on both sides of the gimbal threshold",
           "[serial][ik][extreme][wrist]") {
   using S = double;
-  const auto robot = puma<S>();
+  const auto robot = puma560Robot<S>();
   JointVector<S> q(6);
   // The threshold is |θ5| ≈ √(64 eps) ≈ 1.2e-7 (closed_form_ik.hpp, wrist3R): inside, θ4 and θ6
   // are determined only in combination (a continuum, one representative); outside, every
@@ -207,7 +194,7 @@ TEST_CASE("IK extremes: PUMA wrist singularity (θ5 → 0) on both sides of the 
 
 TEST_CASE("IK extremes: PUMA elbow singularity (arm stretched) on both sides", "[serial][ik][extreme][elbow]") {
   using S = double;
-  const auto robot = puma<S>();
+  const auto robot = puma560Robot<S>();
   // The wrist centre's distance from axis 2 is extremal at tan θ3 = −d4/a3 (a3 = 0.0203,
   // d4 = 0.4318): the elbow-up and elbow-down postures merge there (a double root of the
   // positioning equations).
@@ -240,7 +227,7 @@ TEST_CASE("IK extremes: nearly intersecting wrist axes across the Pieper thresho
   // threshold (Tolerance::input()·L) the Pieper closed form is used, above it the general 6R;
   // both must return the true posture with a residual at rounding level.
   for (const double e : {0.0, 1e-12, 1e-9, 1e-7, 1e-5, 1e-3, 1e-1}) {
-    const auto robot = puma<S>(1.0, e);
+    const auto robot = puma560Robot<S>(1.0, e);
     for (int t = 0; t < 3; ++t) {
       JointVector<S> q(6);
       for (int i = 0; i < 6; ++i) q(i) = uniform<S>(g, -3, 3);

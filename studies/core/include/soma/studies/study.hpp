@@ -1,0 +1,144 @@
+#pragma once
+// A study reproduces one catalogue item (DESIGN §4): it computes, then records checks
+// {name, expected, got, error, tolerance, seconds}; any failed check fails the study.
+#include "soma/algebra/scalar.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace soma::studies {
+
+struct Check {
+  std::string name;      ///< what was checked, e.g. "log(exp(ξ)) = ξ, θ = π − 1e-8"
+  std::string expected;  ///< the reference value as text (book value, identity, other method)
+  std::string got;       ///< soma's value as text
+  double error = 0;      ///< |got − expected| (or the residual of an identity)
+  double tolerance = 0;  ///< the check passes when error ≤ tolerance
+  double seconds = 0;    ///< wall time since the previous check (the work that produced it)
+  bool passed = false;
+};
+
+struct Figure {
+  std::string file;     ///< path relative to the report directory, e.g. "figures/GF-4.4-helix.png"
+  std::string caption;  ///< one sentence a reader of a paper can follow
+};
+
+/// What a running study writes to. Created by the runner; one per study run.
+class Context {
+ public:
+  Context(ScalarKind scalar, std::filesystem::path reportDir, bool makeFigures);
+
+  ScalarKind scalar() const { return scalar_; }
+  bool makeFigures() const { return makeFigures_; }
+
+  /// A numeric check: passes when |got − expected| ≤ tolerance. Values printed in full precision.
+  template <class S>
+  bool checkNear(const std::string& name, const S& expected, const S& got, const S& tolerance) {
+    using std::abs;
+    const S err = abs(got - expected);
+    return record(name, toString(expected), toString(got), toDouble(err), toDouble(tolerance),
+                  isFinite(err) && err <= tolerance);
+  }
+  /// A residual check of an identity: passes when 0 ≤ residual ≤ tolerance.
+  template <class S>
+  bool checkResidual(const std::string& name, const S& residual, const S& tolerance) {
+    return record(name, "0", toString(residual), toDouble(residual), toDouble(tolerance),
+                  isFinite(residual) && residual <= tolerance);
+  }
+  /// An exact check (a count, a classification): passes when expected == got.
+  bool checkEqual(const std::string& name, long long expected, long long got);
+  bool checkEqual(const std::string& name, const std::string& expected, const std::string& got);
+  /// The book's printed formula fails, as its erratum says: passes when `residual` exceeds
+  /// `threshold` (the tolerance the corrected formula meets). Recorded as "<name> [as printed]",
+  /// expected "fails (erratum <erratum>)", got "residual <value>".
+  template <class S>
+  bool checkPrintedFails(const std::string& name, const std::string& erratum, const S& residual,
+                         const std::type_identity_t<S>& threshold) {
+    return record(name + " [as printed]", "fails (erratum " + erratum + ")", "residual " + toString(residual, 6),
+                  toDouble(residual), toDouble(threshold), isFinite(residual) && residual > threshold);
+  }
+  /// A check whose error the study computed itself (e.g. a printed formula failing by design,
+  /// recorded as `expected: "fails (erratum E4.8)"`).
+  bool record(const std::string& name, const std::string& expected, const std::string& got,
+              double error, double tolerance, bool passed);
+
+  /// Absolute path for a figure file name (under <reportDir>/figures/); register it with figure().
+  std::filesystem::path figurePath(const std::string& fileName) const;
+  void figure(const std::string& fileName, const std::string& caption);
+  /// Free text shown under the study in the report (method, erratum, what was measured).
+  void note(const std::string& text);
+
+  const std::vector<Check>& checks() const { return checks_; }
+  const std::vector<Figure>& figures() const { return figures_; }
+  const std::vector<std::string>& notes() const { return notes_; }
+  bool passed() const;
+
+ private:
+  ScalarKind scalar_;
+  std::filesystem::path reportDir_;
+  bool makeFigures_;
+  std::chrono::steady_clock::time_point last_;
+  std::vector<Check> checks_;
+  std::vector<Figure> figures_;
+  std::vector<std::string> notes_;
+};
+
+struct Study {
+  std::string id;       ///< catalogue ID, e.g. "GF-4.4.2-se3-log"
+  std::string title;    ///< one line
+  std::string source;   ///< "GF §4.4.2" (section; the book does not number equations)
+  std::string chapter;  ///< report section, e.g. "GF 4 — Lie algebra"
+  bool scalarGeneric = false;  ///< honours --scalar; otherwise it runs in double
+  std::function<void(Context&)> run;
+};
+
+/// All registered studies, sorted by id.
+const std::vector<Study>& registry();
+const Study* findStudy(const std::string& id);
+void registerStudy(Study s);
+
+struct Registrar {
+  explicit Registrar(Study s) { registerStudy(std::move(s)); }
+};
+
+/// Result of running one study.
+struct StudyResult {
+  const Study* study = nullptr;
+  ScalarKind scalar = ScalarKind::Double;
+  std::vector<Check> checks;
+  std::vector<Figure> figures;
+  std::vector<std::string> notes;
+  double seconds = 0;
+  std::string error;  ///< an exception thrown by the study (counts as a failure)
+  bool passed() const;
+};
+
+/// Run one study; exceptions are caught and reported as a failure.
+StudyResult runStudy(const Study& s, ScalarKind scalar, const std::filesystem::path& reportDir,
+                     bool makeFigures);
+
+}  // namespace soma::studies
+
+#define SOMA_STUDY_CONCAT2(a, b) a##b
+#define SOMA_STUDY_CONCAT(a, b) SOMA_STUDY_CONCAT2(a, b)
+/// Register a study at static-initialisation time. The general form names every field:
+///   SOMA_STUDY({.id = "GF-2.1-U1-unit-complex", .title = ..., .source = "GF §2.1",
+///               .chapter = "GF 2 — Lie groups", .scalarGeneric = true, .run = [](Context& c){...}});
+#define SOMA_STUDY(...)                                                                   \
+  static const ::soma::studies::Registrar SOMA_STUDY_CONCAT(somaStudyRegistrar_, __COUNTER__){ \
+      ::soma::studies::Study __VA_ARGS__}
+/// The short form, in a chapter file that defines `kChapter` (its report section), for a study
+/// whose body FN(Context&) (a function or a lambda) runs in double:
+///   SOMA_STUDY_DOUBLE("GF-6.1-meet-condition", "Two lines meet iff …", "GF §6.1", meetCondition);
+#define SOMA_STUDY_DOUBLE(ID, TITLE, SOURCE, ...) \
+  SOMA_STUDY({.id = ID, .title = TITLE, .source = SOURCE, .chapter = kChapter, .scalarGeneric = false, .run = __VA_ARGS__})
+/// The short form for a study whose body is the function template FN<S>(Context&), run in the
+/// scalar asked for (--scalar):
+///   SOMA_STUDY_SCALAR("GF-4.4.2-se3-log", "…", "GF §4.4.2", se3Log);
+#define SOMA_STUDY_SCALAR(ID, TITLE, SOURCE, FN)                                                          \
+  SOMA_STUDY({.id = ID, .title = TITLE, .source = SOURCE, .chapter = kChapter, .scalarGeneric = true, \
+              .run = [](::soma::studies::Context& c) { ::soma::withScalar(c.scalar(), [&]<class S>() { FN<S>(c); }); }})

@@ -1,0 +1,244 @@
+// Studies of GF §10.3 (Pieper robots: three consecutive axes meeting or parallel), in double:
+// the T³ robot, the PUMA 560, the count theorem, the algorithm on every triple position, the
+// closing remark on singularities, and Fig. 10.2 (all postures of the T³ for one pose).
+#include "soma/geometry/serial/closed_form_ik.hpp"
+#include "soma/render/render.hpp"
+#include "soma/geometry/serial/example_robots.hpp"
+#include "soma/studies/study.hpp"
+
+#include <fmt/format.h>
+
+#include <map>
+#include <random>
+
+namespace soma::studies::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
+namespace {
+
+using S = double;
+namespace rd = soma::render;
+
+JointVector<S> randomQ(std::mt19937_64& g, int n) {
+  std::uniform_real_distribution<double> u(-3, 3);
+  JointVector<S> q(n);
+  for (int i = 0; i < n; ++i) q(i) = u(g);
+  return q;
+}
+
+bool contains(const Solution<S>& sol, const JointVector<S>& q) {
+  for (const auto& p : sol.postures) {
+    bool same = true;
+    for (int i = 0; i < q.size(); ++i)
+      if (std::abs(std::sin(p(i) - q(i))) > 1e-8 || std::cos(p(i) - q(i)) < 0) same = false;
+    if (same) return true;
+  }
+  return false;
+}
+
+/// Round trips over random joint vectors: worst residual, recovery rate, count histogram.
+struct Sweep {
+  S worst = 0;
+  int recovered = 0, odd = 0, over = 0, trials = 0;
+  std::map<int, int> counts;
+};
+Sweep sweep(const SerialRobot<S>& robot, int trials, std::uint64_t seed, int maxCount) {
+  std::mt19937_64 g(seed);
+  Sweep s;
+  for (int k = 0; k < trials; ++k) {
+    const JointVector<S> q = randomQ(g, robot.dof());
+    const auto sol = solveClosedForm(robot, robot.fk(q), IkMethod::Auto);
+    s.worst = std::max(s.worst, sol.worstResidual());
+    if (contains(sol, q)) ++s.recovered;
+    if (sol.count() % 2) ++s.odd;
+    if (int(sol.count()) > maxCount) ++s.over;
+    ++s.counts[int(sol.count())];
+    ++s.trials;
+  }
+  return s;
+}
+std::string histogram(const Sweep& s) {
+  std::string h;
+  for (const auto& [n, k] : s.counts) h += fmt::format("{}{}×{}", h.empty() ? "" : ", ", k, n);
+  return h;
+}
+void recordSweep(Context& c, const std::string& what, const Sweep& s, int maxCount) {
+  c.checkEqual(what + ": the true posture is among the solutions (random joints → pose → IK)", s.trials, s.recovered);
+  c.checkEqual(what + ": counts are even", 0, s.odd);
+  c.checkEqual(what + fmt::format(": counts ≤ {}", maxCount), 0, s.over);
+  c.checkResidual(what + ": worst pose residual over all postures", s.worst, Tolerance<S>::identity(4096));
+  c.note(what + ": posture counts " + histogram(s));
+}
+
+// GF §10.3, GF-10.3-pieper-theorem
+void pieperTheorem(Context& c) {
+  const Sweep t3 = sweep(t3Robot<S>(), 200, 101, 8), pm = sweep(puma560Robot<S>(), 200, 102, 8);
+  recordSweep(c, "T³ (axes 2-4 parallel)", t3, 8);
+  recordSweep(c, "PUMA 560 (axes 4-6 meet)", pm, 8);
+  c.checkEqual("T³: 8 postures occur", 1, t3.counts.count(8) ? 1 : 0);
+  c.checkEqual("T³: 4-posture poses occur (one branch unreachable, as the catalogue observed)", 1,
+               t3.counts.count(4) ? 1 : 0);
+  c.checkEqual("PUMA 560: 8 postures occur", 1, pm.counts.count(8) ? 1 : 0);
+}
+
+// GF §10.3.1, GF-10.3.1-pieper-algorithm (errata E10.2, E10.3: the fixed-point equation uses
+// a4*a3*a2*, and k' = a1* k a6* a5*, as implemented)
+void pieperAlgorithm(Context& c) {
+  std::mt19937_64 g(103);
+  std::normal_distribution<double> n;
+  std::uniform_real_distribution<double> u(-1, 1);
+  auto unit = [&] { return Vec3<S>(n(g), n(g), n(g)).normalized(); };
+  for (int first = 0; first < 4; ++first)
+    for (bool concurrent : {true, false}) {
+      Sweep all;
+      for (int k = 0; k < 25; ++k) {
+        std::vector<SerialJoint<S>> js(6);
+        for (auto& j : js) {
+          j.axis = unit();
+          j.point = Vec3<S>(u(g), u(g), u(g));
+        }
+        const Vec3<S> p(u(g), u(g), u(g)), d = unit();
+        for (int i = first; i < first + 3; ++i) (concurrent ? js[i].point : js[i].axis) = concurrent ? p : d;
+        const auto robot = SerialRobot<S>::fromPOE(js, SE3<S>::Random(g));
+        const Sweep s = sweep(robot, 4, 200 + k, 8);
+        all.worst = std::max(all.worst, s.worst);
+        all.recovered += s.recovered, all.odd += s.odd, all.over += s.over, all.trials += s.trials;
+        for (const auto& [m, cnt] : s.counts) all.counts[m] += cnt;
+      }
+      recordSweep(c, fmt::format("axes {}-{} {} (25 random robots × 4 poses)", first + 1, first + 3,
+                                 concurrent ? "meet" : "parallel"), all, 8);
+    }
+}
+
+// GF §10.3.2, GF-10.3.2-T3-robot (E10.4–E10.8 corrected forms)
+void t3Example(Context& c) {
+  const double l1 = 0.9, l2 = 0.7, l3 = 0.25;
+  const auto robot = t3Robot(l1, l2, l3);
+  JointVector<S> q(6);
+  q << 0.4, -0.7, 1.1, 0.5, 0.35, -1.2;
+  const SE3<S> T = robot.fk(q);
+  const auto sol = solvePieper(robot, T);
+  c.checkEqual("the catalogue's instance θ = (0.4, −0.7, 1.1, 0.5, 0.35, −1.2) is recovered", 1, contains(sol, q) ? 1 : 0);
+  c.checkResidual("every posture reproduces k", sol.worstResidual(), Tolerance<S>::identity(4096));
+  c.note(fmt::format("postures at this pose: {}", sol.count()));
+  // Joints 2-4 parallel: the planar motion E2E3E4 turns by θ2 + θ3 + θ4 = φ' about x.
+  for (std::size_t k = 0; k < sol.count(); ++k) {
+    const auto& p = sol.postures[k];
+    const SE3<S> X = robot.joints()[0].motion(p(0)).inverse() * T * robot.home().inverse() *
+                     robot.joints()[5].motion(p(5)).inverse() * robot.joints()[4].motion(p(4)).inverse();
+    const Mat3<S> R = X.rotation();
+    const double phi = std::atan2(R(2, 1), R(1, 1));
+    const double sum = p(1) + p(2) + p(3);
+    c.checkResidual(fmt::format("posture {}: θ4 = φ′ − θ2 − θ3 (planar sum)", k + 1),
+                    std::abs(std::sin((phi - sum) / 2)), 1e-12);
+    // Cosine rule (E10.7: l2², not l1²): s² = l1² + l2² + 2 l1 l2 cos θ3 is the squared distance
+    // between axis 2 and axis 4 after the motion, i.e. |P(r4') − r2|².
+    const Vec3<S> r4 = robot.joints()[1].motion(p(1)).act(robot.joints()[2].motion(p(2)).act(robot.joints()[3].point));
+    const double s2 = Vec2<S>(r4.y(), r4.z()).squaredNorm();
+    c.checkResidual(fmt::format("posture {}: s² = l1² + l2² + 2 l1 l2 cos θ3 (E10.7)", k + 1),
+                    std::abs(s2 - (l1 * l1 + l2 * l2 + 2 * l1 * l2 * std::cos(p(2)))), 1e-12);
+  }
+  // Printed E10.7 form cos θ3 = (s² − l1² − l1²)/2 l1 l2 fails.
+  const double s2 = l1 * l1 + l2 * l2 + 2 * l1 * l2 * std::cos(q(2));
+  const double printed = (s2 - 2 * l1 * l1) / (2 * l1 * l2);
+  c.record("cos θ3 = (s² − l1² − l1²)/2l1l2 [as printed]", "fails (erratum E10.7)",
+           fmt::format("{:.6f} vs cos θ3 = {:.6f}", printed, std::cos(q(2))), std::abs(printed - std::cos(q(2))), 1e-12,
+           std::abs(printed - std::cos(q(2))) > 1e-6);
+}
+
+// GF §10.3.3, GF-10.3.3-PUMA (E10.9: a4a5a6 = a3*a2*a1* k)
+void pumaExample(Context& c) {
+  const auto robot = puma560Robot<S>();
+  const auto tri = findPieperTriple(robot);
+  c.checkEqual("PUMA 560: axes 4-6 meet (Pieper triple found at joint 4)", 4, tri.first + 1);
+  const Sweep s = sweep(robot, 300, 104, 8);
+  recordSweep(c, "PUMA 560", s, 8);
+  // a4a5a6 = a3* a2* a1* k (E10.9) against the printed k a1* a2* a3*.
+  std::mt19937_64 g(105);
+  const JointVector<S> q = randomQ(g, 6);
+  SE3<S> e123, e456;
+  for (int i = 0; i < 3; ++i) e123 = e123 * robot.joints()[i].motion(q(i));
+  for (int i = 3; i < 6; ++i) e456 = e456 * robot.joints()[i].motion(q(i));
+  const SE3<S> k = robot.fk(q) * robot.home().inverse();
+  c.checkResidual("a4a5a6 = a3*a2*a1* k (corrected, E10.9)", poseResidual(e456, SE3<S>(e123.inverse() * k), 1.0), 1e-14);
+  const double printed = poseResidual(e456, SE3<S>(k * e123.inverse()), 1.0);
+  c.record("a4a5a6 = k a1*a2*a3* [as printed]", "fails (erratum E10.9)", fmt::format("residual {:.3g}", printed),
+           printed, 1e-14, printed > 1e-6);
+}
+
+// GF §10.3, GF-10.3-closing-remarks: singular ⇔ joint screws dependent (a reciprocal screw exists)
+void closingRemarks(Context& c) {
+  const auto robot = t3Robot<S>();
+  JointVector<S> q(6);
+  q << 0.3, -0.6, 0.9, 0.4, pi<S>() / 2, 0.2;  // θ5 = π/2: axis 6 parallel to axes 2-4
+  const auto m = singularityMeasures(robot, q);
+  c.checkEqual("T³ at θ5 = π/2: rank of the joint screws", 5, m.rank);
+  const auto sol = solvePieper(robot, robot.fk(q));
+  c.checkEqual("… and the IK reports the singularity (a continuum)", 1, sol.continuum ? 1 : 0);
+  c.checkResidual("… with every returned posture on the pose", sol.worstResidual(), 1e-9);
+  q(4) = pi<S>() / 2 - 0.3;
+  c.checkEqual("T³ at θ5 = π/2 − 0.3: rank 6", 6, singularityMeasures(robot, q).rank);
+}
+
+// GF Fig. 10.2, GF-10.3.2-fig10.2-T3: all postures of the T³ for one pose, drawn together.
+void t3Figure(Context& c) {
+  const auto robot = t3Robot<S>();
+  // The catalogue's instance has 4 postures; draw the first pose of a fixed-seed sequence with 8.
+  std::mt19937_64 g(107);
+  JointVector<S> q = randomQ(g, 6);
+  while (solvePieper(robot, robot.fk(q)).count() != 8) q = randomQ(g, 6);
+  const SE3<S> T = robot.fk(q);
+  const auto sol = solvePieper(robot, T);
+  c.checkEqual("postures drawn", 8, int(sol.count()));
+  c.checkResidual("worst residual of the drawn postures", sol.worstResidual(), Tolerance<S>::identity(4096));
+  if (!c.makeFigures()) return;
+  rd::Scene scene;
+  scene.title = fmt::format("T³ robot (GF Fig. 10.2): all {} postures for one tool pose", sol.count());
+  const rd::Color colors[] = {rd::palette::blue,   rd::palette::vermillion, rd::palette::bluishGreen,
+                              rd::palette::orange, rd::palette::reddishPurple, rd::palette::skyBlue,
+                              rd::palette::darkGrey, rd::palette::yellow};
+  for (std::size_t k = 0; k < sol.count(); ++k) {
+    const auto fr = robot.frames(sol.postures[k]);
+    rd::Tube tube;
+    tube.c = colors[k % 8];
+    tube.radius = 0.022;
+    // Links: base → joint points (moved) → tool.
+    for (const auto& f : fr) tube.p.push_back(f.translation());
+    scene.add(tube);
+    rd::Points joints;
+    joints.c = colors[k % 8];
+    joints.radius = 0.035;
+    for (std::size_t i = 0; i + 1 < fr.size(); ++i) joints.p.push_back(fr[i].translation());
+    scene.add(joints);
+    // The wrist flip (θ5 → −θ5, θ4, θ6 ± π) leaves the links in place: show joint 5's frame.
+    scene.add(rd::Frame{fr[4].matrix(), 0.12});
+  }
+  scene.add(rd::Frame{T.matrix(), 0.3});
+  scene.add(rd::Frame{Mat4<S>::Identity(), 0.3});
+  rd::Label l;
+  l.at = T.translation();
+  l.text = "tool pose k";
+  scene.add(l);
+  const std::string file = "GF-10.3.2-fig10.2-T3.png";
+  rd::renderPng(scene, Eigen::Vector3d(-1.0, -0.8, -0.45), {1200, 1000}, c.figurePath(file));
+  c.figure(file, fmt::format("The T³ robot (joints 2-4 parallel, l = (0.9, 0.7, 0.25)): the {} postures that "
+                             "place the tool at one pose, one colour each (tubes through the joint axis "
+                             "points, dots at the joints, joint 5's frame showing the wrist flip — the "
+                             "two wrist postures share their links), with the base and tool frames.", sol.count()));
+}
+
+const std::string kChapter = "GF 10 — Points, lines, planes; Pieper robots";
+
+SOMA_STUDY({.id = "GF-10.3-pieper-theorem", .title = "Pieper robots have at most 8 postures (T³ and PUMA counts)",
+            .source = "GF §10.3", .chapter = kChapter, .run = pieperTheorem});
+SOMA_STUDY({.id = "GF-10.3.1-pieper-algorithm", .title = "Pieper's decoupling for every triple position, meeting or parallel",
+            .source = "GF §10.3.1", .chapter = kChapter, .run = pieperAlgorithm});
+SOMA_STUDY({.id = "GF-10.3.2-T3-robot", .title = "The T³ robot: closed-form IK, planar sum and cosine rule (E10.7)",
+            .source = "GF §10.3.2", .chapter = kChapter, .run = t3Example});
+SOMA_STUDY({.id = "GF-10.3.3-PUMA", .title = "The PUMA 560: 8 postures, the wrist split a4a5a6 = a3*a2*a1*k (E10.9)",
+            .source = "GF §10.3.3", .chapter = kChapter, .run = pumaExample});
+SOMA_STUDY({.id = "GF-10.3-closing-remarks", .title = "Singularities: dependent joint screws (T³ at θ5 = π/2)",
+            .source = "GF §10.3", .chapter = kChapter, .run = closingRemarks});
+SOMA_STUDY({.id = "GF-10.3.2-fig10.2-T3", .title = "Fig. 10.2: all postures of the T³ for one pose",
+            .source = "GF §10.3.2, Fig. 10.2", .chapter = kChapter, .run = t3Figure});
+
+}  // namespace
+}  // namespace soma::studies::SOMA_UNITY_ID

@@ -1,0 +1,131 @@
+#pragma once
+// Shared helpers for the GF chapter 13 studies (double): screw algebra in the book's conventions,
+// random bodies and robots with fixed seeds, finite differences, the PUMA 560 with the inertias of
+// studies/robots/puma560_dynamics.json, and "the printed formula fails" checks.
+#include "soma/geometry/dynamics/joint_integrators.hpp"
+#include "soma/geometry/dynamics/robot_dynamics.hpp"
+#include "soma/geometry/dynamics/serial_dynamics.hpp"
+#include "soma/geometry/dynamics/spatial_inertia.hpp"
+#include "soma/geometry/serial/example_robots.hpp"
+#include "soma/studies/study.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <random>
+
+namespace soma::studies::gf13 {
+
+inline constexpr const char* kChapter = "GF 13 — Dynamics";
+using V3 = Vec3<double>;
+using V6 = Vec6<double>;
+using M3 = Mat3<double>;
+using M6 = Mat6<double>;
+using DV = DynVector<double>;
+using DM = DynMatrix<double>;
+using Q = __float128;
+using std::abs;
+
+inline double uni(std::mt19937_64& g, double lo = -1, double hi = 1) {
+  return std::uniform_real_distribution<double>(lo, hi)(g);
+}
+inline V3 rv3(std::mt19937_64& g, double lo = -1, double hi = 1) { return V3(uni(g, lo, hi), uni(g, lo, hi), uni(g, lo, hi)); }
+inline V6 rv6(std::mt19937_64& g) {
+  V6 v;
+  for (int i = 0; i < 6; ++i) v(i) = uni(g);
+  return v;
+}
+inline V3 unit3(std::mt19937_64& g) {
+  V3 v;
+  do v = rv3(g);
+  while (v.squaredNorm() < 1e-2 || v.squaredNorm() > 1);
+  return v.normalized();
+}
+inline M3 hat(const V3& v) { return skew(v); }
+/// ad(s) = [[Ω, 0], [V, Ω]] and [a, b] = ad(a) b (GF §13.1 conventions).
+inline M6 adm(const V6& s) { return SE3Tangent<double>(s).ad(); }
+inline V6 br(const V6& a, const V6& b) { return adm(a) * b; }
+/// {s, P} = −ad(s)ᵀ P
+inline V6 coad(const V6& s, const V6& P) { return -adm(s).transpose() * P; }
+inline M6 q0() {
+  M6 Q0 = M6::Zero();
+  Q0.topRightCorner<3, 3>().setIdentity();
+  Q0.bottomLeftCorner<3, 3>().setIdentity();
+  return Q0;
+}
+inline V6 lineScrew(const V3& w, const V3& r, double pitch = 0) {
+  V6 s;
+  s << w, r.cross(w) + pitch * w;
+  return s;
+}
+inline SpatialInertia<double> randomBody(std::mt19937_64& g, double comRange = 1) {
+  const V3 d = rv3(g, 0.05, 0.5);
+  const M3 R = SO3<double>::Random(g).matrix();
+  M3 I = R * V3(d(0) + d(1), d(1) + d(2), d(2) + d(0)).asDiagonal() * R.transpose();
+  I = (I + I.transpose()) / 2;
+  return SpatialInertia<double>(uni(g, 0.5, 3), rv3(g, -comRange, comRange), I);
+}
+
+/// A random n-joint robot (revolute axes through random points; `prismaticJoint` ≥ 0 makes that
+/// joint a slide), random links, g = 9.81 unless given.
+inline SerialDynamics<double> randomRobot(std::mt19937_64& g, int n, int prismaticJoint = -1, double grav = 9.81) {
+  std::vector<SE3Tangent<double>> s;
+  std::vector<SpatialInertia<double>> l;
+  for (int i = 0; i < n; ++i) {
+    const V3 w = unit3(g);
+    V6 x;
+    if (i == prismaticJoint)
+      x << 0, 0, 0, w;
+    else
+      x = lineScrew(w, rv3(g));
+    s.emplace_back(x);
+    l.push_back(randomBody(g));
+  }
+  return SerialDynamics<double>(s, l, grav);
+}
+template <class S> SerialDynamics<S> castRobot(const SerialDynamics<double>& r) {
+  std::vector<SE3Tangent<S>> s;
+  std::vector<SpatialInertia<S>> l;
+  for (int i = 0; i < r.dof(); ++i) {
+    s.emplace_back(castMatrix<S>(r.homeScrews()[std::size_t(i)].coeffs()));
+    const SpatialInertia<double>& b = r.homeLinks()[std::size_t(i)];
+    const Mat3<S> I = castMatrix<S>(b.inertiaAboutCentre());
+    l.emplace_back(scalarCast<S>(b.mass()), castMatrix<S>(b.centreOfMass()), Mat3<S>((I + I.transpose()) / S(2)));
+  }
+  return SerialDynamics<S>(s, l, scalarCast<S>(r.gravity()));
+}
+inline DV rjoints(std::mt19937_64& g, int n, double lo = -1.5, double hi = 1.5) {
+  DV v(n);
+  for (int i = 0; i < n; ++i) v(i) = uni(g, lo, hi);
+  return v;
+}
+template <class To, class From> DynVector<To> castV(const DynVector<From>& v) {
+  DynVector<To> o(v.size());
+  for (Eigen::Index i = 0; i < v.size(); ++i) o(i) = scalarCast<To>(v(i));
+  return o;
+}
+/// f'(0), 8th-order central differences (error d⁸ |f⁽⁹⁾|/630 + 2.3 ε |f| / d).
+template <class S, class F> S diff8(F&& f, const S& d) {
+  const S c[4] = {S(4) / S(5), S(-1) / S(5), S(4) / S(105), S(-1) / S(280)};
+  S r = S(0);
+  for (int k = 1; k <= 4; ++k) r += c[k - 1] * (f(S(k) * d) - f(S(-k) * d));
+  return r / d;
+}
+/// f'(0) in __float128 with d = 2⁻⁸: accurate to ~1e-20 relative for the smooth functions here.
+template <class F> double dq(F&& f) { return double(diff8<Q>(f, Q(1) / Q(256))); }
+/// Matrix-valued central difference (4th order, double) with step d.
+template <class F> auto dmat(F&& f, double d = 1e-3) {
+  using R = std::decay_t<decltype(f(d))>;  // evaluate: no Eigen expression may outlive the temporaries
+  return R(((f(-2 * d) - f(2 * d)) / 12 + (f(d) - f(-d)) * (2.0 / 3.0)) / d);
+}
+
+inline double maxAbs(const DV& v) { return v.cwiseAbs().maxCoeff(); }
+inline double maxAbs(const DM& v) { return v.cwiseAbs().maxCoeff(); }
+
+/// The PUMA 560 (standard DH) with the Armstrong–Khatib–Burdick inertias of puma560_dynamics.json.
+inline std::filesystem::path robotsDir() {
+  return std::filesystem::path(__FILE__).parent_path().parent_path() / "robots";
+}
+inline std::vector<SpatialInertia<double>> pumaLinks() { return readLinkInertias(robotsDir() / "puma560_dynamics.json"); }
+inline SerialDynamics<double> puma(double grav = 9.81) { return serialDynamicsOf(puma560Robot<double>(), pumaLinks(), grav); }
+
+}  // namespace soma::studies::gf13

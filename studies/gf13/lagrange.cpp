@@ -1,0 +1,420 @@
+// Studies of GF §13.4 (double, with __float128 differences): the Lagrangian energies and the
+// energy of free motion per integrator (figure), partial derivatives, Euler–Lagrange = Newton–Euler,
+// Christoffel symbols, ∂A in three cases, small oscillations and harmonic screws (errata 3–9, 16,
+// 17). §13.5 is in gf13/hamilton.cpp.
+#include "gf13/common.hpp"
+
+#include "soma/render/plot.hpp"
+
+#include <Eigen/Eigenvalues>
+
+namespace soma::studies::gf13::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
+namespace {
+
+namespace rd = soma::render;
+
+DV pumaStart() {
+  DV th(6);
+  th << 0.2, -0.6, 0.8, 0.3, 0.9, -0.4;
+  return th;
+}
+
+template <class S> double rk4Drift(const SerialDynamics<double>& r0, const DV& th, const DV& thd, double h, int steps) {
+  const SerialDynamics<S> r = castRobot<S>(r0);
+  JointState<S> y{castV<S>(th), castV<S>(thd)};
+  const DynVector<S> z = DynVector<S>::Zero(r.dof());
+  const S e0 = totalEnergy(r, y);
+  double worst = 0;
+  for (int k = 0; k < steps; ++k) {
+    y = rk4Step(r, y, scalarCast<S>(h), z);
+    worst = std::max(worst, abs(toDouble(S(totalEnergy(r, y) - e0))));
+  }
+  return worst;
+}
+template <class S> double midDrift(const SerialDynamics<double>& r0, const DV& th, const DV& thd, double h, int steps) {
+  const SerialDynamics<S> r = castRobot<S>(r0);
+  CanonicalState<S> y{castV<S>(th), r.momentum(castV<S>(th), castV<S>(thd))};
+  const DynVector<S> z = DynVector<S>::Zero(r.dof());
+  const S e0 = r.hamiltonian(y.theta, y.momentum);
+  double worst = 0;
+  for (int k = 0; k < steps; ++k) {
+    y = implicitMidpointStep(r, y, scalarCast<S>(h), z);
+    worst = std::max(worst, abs(toDouble(S(r.hamiltonian(y.theta, y.momentum) - e0))));
+  }
+  return worst;
+}
+
+void energies(Context& ctx) {
+  const SerialDynamics<double> r = puma();
+  const DV th0 = pumaStart(), thd0 = DV::Constant(6, 0.5), z = DV::Zero(6);
+  const double h = 2e-3, T = 10;
+  const int steps = int(T / h);
+  JointState<double> y{th0, thd0};
+  CanonicalState<double> c{th0, r.momentum(th0, thd0)};
+  const double e0 = totalEnergy(r, y);
+  const double ep0 = r.kineticEnergy(th0, thd0) + r.potentialEnergy(th0, GfPrinting::AsPrinted);
+  std::vector<double> ts, er, em, ep;
+  double wr = 0, wm = 0, wp = 0, wr1 = 0, wm1 = 0;
+  for (int k = 1; k <= steps; ++k) {
+    y = rk4Step(r, y, h, z);
+    c = implicitMidpointStep(r, c, h, z);
+    const double a = abs(totalEnergy(r, y) - e0), b = abs(r.hamiltonian(c.theta, c.momentum) - e0);
+    const double p = abs(r.kineticEnergy(y.theta, y.thetaDot) + r.potentialEnergy(y.theta, GfPrinting::AsPrinted) - ep0);
+    wr = std::max(wr, a);
+    wm = std::max(wm, b);
+    wp = std::max(wp, p);
+    if (k * h <= 1 + 1e-12) {
+      wr1 = wr;
+      wm1 = wm;
+    }
+    if (k % 10 == 0) {
+      ts.push_back(k * h);
+      er.push_back(std::max(a, 1e-16));
+      em.push_back(std::max(b, 1e-16));
+      ep.push_back(std::max(p, 1e-16));
+    }
+  }
+  ctx.note("PUMA 560 (Armstrong et al. inertias, puma560_dynamics.json), τ = 0, g = 9.81, θ₀ = (0.2, −0.6, 0.8, 0.3, "
+           "0.9, −0.4), θ̇₀ = 0.5 rad/s each, E₀ = " + toString(e0, 6) + " J, 10 s at h = 2 ms.");
+  // Bounds from the orders: over a fixed time the energy error scales like h⁴ (RK4) and h² (midpoint),
+  // so halving h must divide it by 16 and 4; we accept the order within ±1 (ratios [8, 32] and [2, 8]).
+  const double r1 = rk4Drift<double>(r, th0, thd0, h, 500), r2 = rk4Drift<double>(r, th0, thd0, h / 2, 1000);
+  const double m1 = midDrift<double>(r, th0, thd0, h, 500), m2 = midDrift<double>(r, th0, thd0, h / 2, 1000);
+  ctx.checkNear("RK4: energy error over 1 s at h = 2 ms / at h = 1 ms ≈ 2⁴ (order 4; accepted 8…32)", 20.0, r1 / r2, 12.0);
+  ctx.checkNear("implicit midpoint: energy error ratio h = 2 ms / 1 ms ≈ 2² (order 2; accepted 2…8)", 5.0, m1 / m2, 3.0);
+  ctx.checkEqual("RK4: error over 10 s > 5 × error over the first second (secular drift)", "drifts", wr > 5 * wr1 ? "drifts" : "bounded");
+  ctx.checkEqual("midpoint: error over 10 s ≤ 3 × error over the first second (no secular drift)", "bounded",
+                 wm <= 3 * wm1 ? "bounded" : "drifts");
+  ctx.note("RK4 over the first second " + toString(wr1, 3) + " J, over 10 s " + toString(wr, 3) + " J; midpoint over the "
+           "first second " + toString(wm1, 3) + " J, over 10 s " + toString(wm, 3) + " J.");
+  ctx.checkPrintedFails("E_K + printed E_P = E_K + Σ g̃ᵀc̃_i = E_K − Σ m g z conserved (lines 8081–8085)", "3", wp, 1e-3);
+  // drift per scalar (RK4 and midpoint, 1 s at h = 2 ms)
+  std::string table;
+  const int n1 = 500;
+  table += "float: RK4 " + toString(rk4Drift<float>(r, th0, thd0, h, n1), 3) + " J, midpoint " + toString(midDrift<float>(r, th0, thd0, h, n1), 3) + " J; ";
+  table += "double: RK4 " + toString(rk4Drift<double>(r, th0, thd0, h, n1), 3) + " J, midpoint " + toString(midDrift<double>(r, th0, thd0, h, n1), 3) + " J; ";
+  table += "long double: RK4 " + toString(rk4Drift<long double>(r, th0, thd0, h, n1), 3) + " J, midpoint " + toString(midDrift<long double>(r, th0, thd0, h, n1), 3) + " J; ";
+  table += "__float128: RK4 " + toString(rk4Drift<Q>(r, th0, thd0, h, 100), 3) + " J (0.2 s)";
+  ctx.note("Energy error per scalar, 1 s at h = 2 ms (truncation dominates except in float): " + table + ".");
+  if (ctx.makeFigures()) {
+    rd::Plot p;
+    p.title = "PUMA 560 free motion: energy error |E(t) − E(0)| per integrator";
+    p.x.label = "t [s]";
+    p.y.label = "|ΔE| [J]";
+    p.y.scale = rd::AxisScale::Log10;
+    p.legend = rd::LegendCorner::BottomRight;
+    p.add("RK4, h = 2 ms", ts, er, rd::Color::hex(0x0072B2));
+    p.add("implicit midpoint (symplectic), h = 2 ms", ts, em, rd::Color::hex(0xD55E00));
+    p.add("RK4 with the printed E_P (erratum 3)", ts, ep, rd::Color::hex(0x009E73)).dashed = true;
+    const std::string file = "GF-13.4-energy-per-integrator.png";
+    rd::renderPlotPng(p, ctx.figurePath(file));
+    ctx.figure(file, "Energy error of the free PUMA 560 (τ = 0, gravity) over 10 s: RK4 (order 4) drifts slowly, the "
+                     "symplectic implicit midpoint rule (order 2) oscillates without drift, and E_K plus the printed "
+                     "potential energy (erratum 3) is not conserved at all.");
+  }
+}
+
+void partials(Context& ctx) {
+  auto g = std::mt19937_64(1341);
+  const SerialDynamics<double> r = randomRobot(g, 6);
+  const SerialDynamics<Q> rq = castRobot<Q>(r);
+  const DV th = rjoints(g, 6), thd = rjoints(g, 6);
+  const auto c = r.configuration(th);
+  const auto qd = r.linkVelocities(c, thd);
+  double eN = 0, eNp = 1e300, eq = 0, eqp = 0, eK = 0, eP = 0, ePp = 1e300, es = 0;
+  for (int i = 0; i < 6; ++i) {
+    auto shifted = [&](double u) {
+      DV a = th;
+      a(i) += u;
+      return a;
+    };
+    for (int j = 0; j < 6; ++j) {
+      const M6 dN = dmat([&](double u) { return r.configuration(shifted(u)).inertias[std::size_t(j)]; });
+      const V6 dqd = dmat([&](double u) {
+        const auto cc = r.configuration(shifted(u));
+        return r.linkVelocities(cc, thd)[std::size_t(j)];
+      });
+      const V6 ds = dmat([&](double u) { return r.configuration(shifted(u)).screws[std::size_t(j)]; });
+      const M6& Nj = c.inertias[std::size_t(j)];
+      const M6 adi = adm(c.screws[std::size_t(i)]);
+      const M6 want = i <= j ? M6(-adi.transpose() * Nj - Nj * adi) : M6(M6::Zero());
+      const M6 printed = j <= i ? M6(-adi.transpose() * Nj + Nj * adi) : M6(M6::Zero());
+      eN = std::max(eN, maxAbs(DM(dN - want)));
+      if (i == j) eNp = std::min(eNp, maxAbs(DM(dN - printed)));
+      const V6 wq = i <= j ? br(c.screws[std::size_t(i)], V6(qd[std::size_t(j)] - qd[std::size_t(i)])) : V6(V6::Zero());
+      eq = std::max(eq, (dqd - wq).norm());
+      if (i < j) eqp = std::max(eqp, dqd.norm());  // printed: zero unless j ≤ i
+      const V6 wsd = i <= j ? br(c.screws[std::size_t(i)], c.screws[std::size_t(j)]) : V6(V6::Zero());
+      es = std::max(es, (ds - wsd).norm());
+    }
+    const DV gk = r.kineticEnergyGradient(th, thd);
+    eK = std::max(eK, abs(dq([&](const Q& u) {
+                            DynVector<Q> a = castV<Q>(th);
+                            a(i) += u;
+                            return rq.kineticEnergy(a, castV<Q>(thd));
+                          }) - gk(i)));
+    const double dEP = dq([&](const Q& u) {
+      DynVector<Q> a = castV<Q>(th);
+      a(i) += u;
+      return rq.potentialEnergy(a);
+    });
+    // printed first form: Σ_{j≥i} −m_j g k·(ω_i × c_j + v_i)
+    double printedEP = 0;
+    for (int j = i; j < 6; ++j) {
+      const V3 cj = c.placements[std::size_t(j)].act(r.homeLinks()[std::size_t(j)].centreOfMass());
+      const V6& si = c.screws[std::size_t(i)];
+      printedEP += -r.homeLinks()[std::size_t(j)].mass() * r.gravity() * V3(si.head<3>().cross(cj) + si.tail<3>())(2);
+    }
+    eP = std::max(eP, abs(dEP - r.gravityTorque(th)(i)));
+    ePp = std::min(ePp, abs(dEP - printedEP) / std::max(1.0, abs(dEP)));
+  }
+  ctx.checkResidual("∂s_j/∂θ_i = [s_i, s_j] (i ≤ j), 0 otherwise (4th-order differences, d = 1e-3)", es, 1e-9);
+  ctx.checkResidual("∂q̇_j/∂θ_i = [s_i, q̇_j − q̇_i] for i ≤ j, 0 for j < i (corrected, erratum 4)", eq, 1e-9);
+  ctx.checkPrintedFails("∂q̇_j/∂θ_i nonzero only 'if j ≤ i' (line 8127): |∂q̇_j/∂θ_i| for i < j", "4", eqp, 1e-6);
+  ctx.checkResidual("∂N_j/∂θ_i = −ad(s_i)ᵀN_j − N_j ad(s_i) for i ≤ j (corrected, erratum 5)", eN, 1e-9);
+  ctx.checkPrintedFails("∂N_j/∂θ_i = −ad(s_i)ᵀN_j + N_j ad(s_i) (line 8131), i = j", "5", eNp, 1e-6);
+  ctx.checkResidual("∂E_K/∂θ_i = −Σ_{j≥i} q̇_jᵀN_j[s_i, q̇_i] (differences in __float128)", eK, 1e-12);
+  ctx.checkResidual("∂E_P/∂θ_i = −Σ_{j≥i} s_iᵀN_j g = C_i", eP, 1e-12);
+  ctx.checkPrintedFails("∂E_P/∂θ_i = Σ_{j≥i} −m_j g k·(ω_i × c_j + v_i) (line 8139)", "3", ePp, 1e-6);
+  ctx.note("Line 8115 writes e^{θ_j ad(s_j)} s_i⁰ for s_j⁰ (erratum 6, typo).");
+}
+
+DV lagrangeTorque(const SerialDynamics<Q>& r, const DV& th, const DV& thd, const DV& thdd) {
+  const int n = r.dof();
+  const DynVector<Q> a = castV<Q>(th), b = castV<Q>(thd), c = castV<Q>(thdd);
+  auto L = [&](const DynVector<Q>& x, const DynVector<Q>& v) { return r.kineticEnergy(x, v) - r.potentialEnergy(x); };
+  DV tau(n);
+  for (int i = 0; i < n; ++i) {
+    auto dLdv = [&](const DynVector<Q>& x, const DynVector<Q>& v) {
+      DynVector<Q> p = v, m = v;
+      p(i) += 1;
+      m(i) -= 1;
+      return (L(x, p) - L(x, m)) / 2;
+    };
+    const double ddt = dq([&](const Q& t) { return dLdv(DynVector<Q>(a + t * b + (t * t / 2) * c), DynVector<Q>(b + t * c)); });
+    const double dth = dq([&](const Q& t) {
+      DynVector<Q> x = a;
+      x(i) += t;
+      return L(x, b);
+    });
+    tau(i) = ddt - dth;
+  }
+  return tau;
+}
+
+void eulerLagrange(Context& ctx) {
+  auto g = std::mt19937_64(1342);
+  double worst = 0;
+  for (int t = 0; t < 6; ++t) {
+    const SerialDynamics<double> r = t == 0 ? puma() : randomRobot(g, 3 + t % 4, t % 3 == 2 ? 1 : -1);
+    const DV th = rjoints(g, r.dof(), -3, 3), thd = rjoints(g, r.dof()), thdd = rjoints(g, r.dof());
+    const DV a = lagrangeTorque(castRobot<Q>(r), th, thd, thdd), b = r.inverseDynamics(th, thd, thdd);
+    worst = std::max(worst, maxAbs(DV(a - b)) / maxAbs(b));
+  }
+  ctx.checkResidual("τ from d/dt ∂L/∂θ̇ − ∂L/∂θ (L = E_K − E_P differentiated numerically in __float128, 8th order) = "
+                    "RNEA (PUMA 560 + 5 random robots, relative)", worst, 1e-12);
+  ctx.note("The Lagrangian is built from E_K = ½Σq̇ᵀNq̇ (link velocities) and E_P = Σmgz, not from A: the agreement "
+           "checks the whole chain of §13.4.1. Differences: step 2⁻⁸, truncation ≈ 1e-22·|f⁽⁹⁾|, rounding ≈ 1e-31.");
+}
+
+std::vector<DM> dAnumeric(const SerialDynamics<double>& r, const DV& th) {
+  const SerialDynamics<Q> rq = castRobot<Q>(r);
+  const int n = r.dof();
+  std::vector<DM> dA(std::size_t(n), DM(n, n));
+  for (int k = 0; k < n; ++k)
+    for (int i = 0; i < n; ++i)
+      for (int j = i; j < n; ++j) {
+        dA[std::size_t(k)](i, j) = dq([&](const Q& u) {
+          DynVector<Q> a = castV<Q>(th);
+          a(k) += u;
+          return rq.massMatrix(a)(i, j);
+        });
+        dA[std::size_t(k)](j, i) = dA[std::size_t(k)](i, j);
+      }
+  return dA;
+}
+
+void christoffel(Context& ctx) {
+  auto g = std::mt19937_64(1343);
+  const SerialDynamics<double> r = randomRobot(g, 5);
+  const DV th = rjoints(g, 5), thd = rjoints(g, 5);
+  const auto dA = dAnumeric(r, th);
+  const auto B = r.coriolisTensor(th);
+  double eb = 0, ep = 0, sc = 0;
+  DM Adot = DM::Zero(5, 5), Cm = DM::Zero(5, 5);
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 5; ++j)
+      for (int k = 0; k < 5; ++k) {
+        const double c = (dA[std::size_t(k)](i, j) + dA[std::size_t(j)](i, k) - dA[std::size_t(i)](j, k)) / 2;
+        const double printed = (dA[std::size_t(k)](i, j) + dA[std::size_t(i)](i, k) - dA[std::size_t(i)](j, k)) / 2;
+        eb = std::max(eb, abs(c - B[std::size_t(i)](j, k)));
+        ep = std::max(ep, abs(printed - B[std::size_t(i)](j, k)));
+        sc = std::max(sc, abs(c));
+        Adot(i, j) += dA[std::size_t(k)](i, j) * thd(k);
+        Cm(i, j) += B[std::size_t(i)](j, k) * thd(k);
+      }
+  // B θ̇θ̇ = (dA/dt)θ̇ − ½ θ̇ᵀ ∂_iA θ̇ (line 8153)
+  DV lhs(5), rhs(5);
+  for (int i = 0; i < 5; ++i) {
+    lhs(i) = thd.dot(B[std::size_t(i)] * thd);
+    rhs(i) = (Adot * thd)(i) - thd.dot(dA[std::size_t(i)] * thd) / 2;
+  }
+  ctx.checkResidual("B_ijkθ̇_jθ̇_k = Ȧ_ijθ̇_j − ½∂_iA_jkθ̇_jθ̇_k (line 8153, relative)", maxAbs(DV(lhs - rhs)) / maxAbs(lhs), 1e-13);
+  ctx.checkResidual("B_ijk = ½(∂_kA_ij + ∂_jA_ik − ∂_iA_jk) (relative)", eb / sc, 1e-13);
+  ctx.checkPrintedFails("B_ijk = ½(∂_kA_ij + ∂_iA_ik − ∂_iA_jk) (line 8165)", "7", ep / sc, 1e-6);
+  const DM M = Adot - 2 * Cm;
+  ctx.checkResidual("Ȧ − 2B(θ̇) is skew-symmetric (passivity; relative)", maxAbs(DM(M + M.transpose())) / maxAbs(M), 1e-13);
+}
+
+void dAcases(Context& ctx) {
+  auto g = std::mt19937_64(1344);
+  const SerialDynamics<double> r = randomRobot(g, 6);
+  const DV th = rjoints(g, 6);
+  const auto c = r.configuration(th);
+  const auto dA = dAnumeric(r, th);
+  const DM A = r.massMatrix(c);
+  auto s = [&](int i) { return c.screws[std::size_t(i)]; };
+  auto Nb = [&](int i) { return c.tails[std::size_t(i)]; };
+  double worst = 0, sc = 0, typo = 0;
+  int triples = 0;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j)
+      for (int k = j; k < 6; ++k) {
+        double f = 0;
+        if (i <= j) f = 0;
+        else if (i <= k) f = s(k).dot(Nb(k) * br(s(j), s(i)));
+        else f = s(k).dot(Nb(i) * br(s(j), s(i))) + s(j).dot(Nb(i) * br(s(k), s(i)));
+        worst = std::max(worst, abs(f - dA[std::size_t(i)](j, k)));
+        sc = std::max(sc, abs(dA[std::size_t(i)](j, k)));
+        ++triples;
+        if (j < k) typo = std::max(typo, abs(s(k).dot(Nb(j) * s(j)) - A(j, k)));
+      }
+  ctx.checkEqual("index triples (i, j ≤ k) on a 6R", 126, triples);
+  ctx.checkResidual("∂A_jk/∂θ_i in the three cases i ≤ j, j < i ≤ k, k < i (relative to max |∂A|)", worst / sc, 1e-13);
+  ctx.checkPrintedFails("A_jk = s_kᵀ(N_j + … + N_n)s_j for j < k (line 8183)", "9", typo / maxAbs(A), 1e-6);
+}
+
+/// A stable equilibrium (minimum of E_P) by Levenberg–Marquardt on ∇E_P = C with Hessian Q, from several starts.
+bool equilibrium(const SerialDynamics<double>& r, std::mt19937_64& g, DV& th) {
+  const int n = r.dof();
+  for (int start = 0; start < 10; ++start) {
+    th = rjoints(g, n, -3, 3);
+    double mu = 1, e = r.potentialEnergy(th);
+    for (int it = 0; it < 400; ++it) {
+      const DV C = r.gravityTorque(th);
+      if (maxAbs(C) < 1e-13) break;
+      const DM Qm = r.potentialHessian(th);
+      const double shift = std::max(0.0, -Eigen::SelfAdjointEigenSolver<DM>(Qm).eigenvalues().minCoeff());
+      const DV trial = th - DM(Qm + (mu + 1.1 * shift) * DM::Identity(n, n)).ldlt().solve(C);
+      const double et = allFinite(trial) ? r.potentialEnergy(trial) : e;
+      if (et < e) {
+        th = trial;
+        e = et;
+        mu = std::max(mu / 10, 1e-12);
+      } else {
+        mu *= 10;
+      }
+    }
+    const Eigen::SelfAdjointEigenSolver<DM> es(r.potentialHessian(th));
+    if (maxAbs(r.gravityTorque(th)) < 1e-11 && es.eigenvalues().minCoeff() > 1e-6) return true;
+  }
+  return false;
+}
+
+void smallOscillations(Context& ctx) {
+  // pendulum: revolute about x through the origin, a small body at (0, 0, −L)
+  const double m = 2, L = 0.7, grav = 9.81;
+  const SerialDynamics<double> pend({SE3Tangent<double>(lineScrew(V3(1, 0, 0), V3::Zero()))},
+                                    {SpatialInertia<double>(m, V3(0, 0, -L), M3::Identity() * 1e-6)}, grav);
+  const DV z = DV::Zero(1);
+  ctx.checkNear("hanging pendulum: Q = ∂²E_P/∂θ² = +mgL (stable)", m * grav * L, pend.potentialHessian(z)(0, 0), 1e-12);
+  ctx.checkNear("printed Q = s_iᵀN̄_i[g, s_j] (lines 8206–8210) gives −mgL: 'unstable' [as printed, erratum 8]", -m * grav * L,
+                pend.potentialHessian(z, GfPrinting::AsPrinted)(0, 0), 1e-12);
+  auto g = std::mt19937_64(1345);
+  // Hessian against differences of C on a random 6R
+  const SerialDynamics<double> r6 = randomRobot(g, 6);
+  const SerialDynamics<Q> rq = castRobot<Q>(r6);
+  const DV th = rjoints(g, 6);
+  const DM H = r6.potentialHessian(th);
+  double eh = 0;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j)
+      eh = std::max(eh, abs(dq([&](const Q& u) {
+                              DynVector<Q> a = castV<Q>(th);
+                              a(j) += u;
+                              return rq.gravityTorque(a)(i);
+                            }) - H(i, j)));
+  ctx.checkResidual("Q_ij = s_aᵀN̄_a[s_b, g] (a = max, b = min) = ∂C_i/∂θ_j (random 6R, relative)", eh / maxAbs(H), 1e-13);
+  // normal modes of a 3R about a stable equilibrium, checked against the nonlinear motion
+  const SerialDynamics<double> r = randomRobot(g, 3);
+  DV eq;
+  const bool found = equilibrium(r, g, eq);
+  ctx.checkEqual("stable equilibrium found (C = 0, Q positive definite)", "yes", found ? "yes" : "no");
+  if (!found) return;
+  const DM A = r.massMatrix(eq), Qm = r.potentialHessian(eq);
+  const Eigen::GeneralizedSelfAdjointEigenSolver<DM> ges(Qm, A);
+  const double lam2 = ges.eigenvalues()(0);
+  const DV mode = ges.eigenvectors().col(0);
+  ctx.checkResidual("det(Q − λ²A) = 0 at the lowest λ² (relative)", abs((Qm - lam2 * A).determinant()) / abs(Qm.determinant()), 1e-12);
+  ctx.checkEqual("all λ² > 0 at a minimum of E_P (stable)", "yes", ges.eigenvalues().minCoeff() > 0 ? "yes" : "no");
+  // nonlinear motion from θ* + εa with θ̇ = 0 returns after one period 2π/λ to within O(ε²)
+  const double lam = std::sqrt(lam2), period = 2 * pi<double>() / lam, eps = 1e-5;
+  const int steps = 2000;
+  JointState<double> y{DV(eq + eps * mode / maxAbs(mode)), DV::Zero(3)};
+  for (int k = 0; k < steps; ++k) y = rk4Step<double>(r, y, period / steps, DV::Zero(3));
+  const double back = maxAbs(DV(y.theta - eq - eps * mode / maxAbs(mode))) / eps;
+  ctx.checkResidual("small oscillation along the lowest mode returns after 2π/λ (error / ε, ε = 1e-5)", back, 1e-3);
+  ctx.note("3R equilibrium: λ² = " + toString(ges.eigenvalues()(0), 5) + ", " + toString(ges.eigenvalues()(1), 5) + ", " +
+           toString(ges.eigenvalues()(2), 5) + " s⁻²; period of the lowest mode " + toString(period, 5) +
+           " s. Line 8195 prints θ̇_i = θ̇_i = 0 for θ̇_i = θ̈_i = 0 (erratum 17, OCR).");
+}
+
+void harmonicScrews(Context& ctx) {
+  auto g = std::mt19937_64(1346);
+  const SerialDynamics<double> r = randomRobot(g, 6);
+  DV eq;
+  const bool found = equilibrium(r, g, eq);
+  ctx.checkEqual("stable equilibrium of a random 6R found", "yes", found ? "yes" : "no");
+  if (!found) return;
+  const DM A = r.massMatrix(eq), Qm = r.potentialHessian(eq);
+  const Eigen::GeneralizedSelfAdjointEigenSolver<DM> ges(Qm, A);
+  const DM P = ges.eigenvectors();  // A-orthonormal columns
+  const auto c = r.configuration(eq);
+  DM J(6, 6);
+  for (int i = 0; i < 6; ++i) J.col(i) = c.screws[std::size_t(i)];
+  const DM H = J * P;  // harmonic screws h = Σ a_i s_i
+  const DM Ji = J.inverse();
+  const DM GA = H.transpose() * Ji.transpose() * A * Ji * H, GQ = H.transpose() * Ji.transpose() * Qm * Ji * H;
+  DM offA = GA, offQ = GQ;
+  offA.diagonal().setZero();
+  offQ.diagonal().setZero();
+  ctx.checkResidual("h_aᵀ(Jᵀ)⁻¹AJ⁻¹h_b = 0 for a ≠ b (six harmonic screws)", maxAbs(offA), 1e-10);
+  ctx.checkResidual("h_aᵀ(Jᵀ)⁻¹QJ⁻¹h_b = 0 for a ≠ b", maxAbs(offQ) / maxAbs(Qm), 1e-10);
+  double typo = 0;
+  for (int a = 0; a < 6; ++a)
+    for (int b = 0; b < a; ++b) {
+      double s = 0;
+      for (int i = 0; i < 6; ++i) s += A(i, i) * P(i, a) * P(i, b);
+      typo = std::max(typo, abs(s));
+    }
+  ctx.checkPrintedFails("A_ijφ_iψ_i = 0 (line 8246)", "16", typo, 1e-6);
+  std::string pitches;
+  for (int a = 0; a < 6; ++a) {
+    const V6 h = H.col(a);
+    pitches += (a ? ", " : "") + toString(h.head<3>().dot(h.tail<3>()) / h.head<3>().squaredNorm(), 3);
+  }
+  ctx.note("Pitches of the six harmonic screws (m): " + pitches + "; λ² from " + toString(ges.eigenvalues()(0), 4) + " to " +
+           toString(ges.eigenvalues()(5), 4) + " s⁻².");
+}
+
+}  // namespace
+
+SOMA_STUDY_DOUBLE("GF-13.4-lagrangian-energies", "E_K + Σmgz conserved in free motion, per integrator and scalar (erratum 3)", "GF §13.4", energies);
+SOMA_STUDY_DOUBLE("GF-13.4.1-partial-derivatives", "∂s_j, ∂q̇_j, ∂N_j, ∂E_K, ∂E_P with respect to θ_i (errata 3–6)", "GF §13.4.1", partials);
+SOMA_STUDY_DOUBLE("GF-13.4.1-euler-lagrange-agreement", "Euler–Lagrange by differentiation = Newton–Euler", "GF §13.4.1", eulerLagrange);
+SOMA_STUDY_DOUBLE("GF-13.4.2-christoffel-B", "B = Christoffel symbols of A; Ȧ − 2B(θ̇) skew (erratum 7)", "GF §13.4.2", christoffel);
+SOMA_STUDY_DOUBLE("GF-13.4.2-dA-three-cases", "∂A_jk/∂θ_i in three index cases (erratum 9)", "GF §13.4.2", dAcases);
+SOMA_STUDY_DOUBLE("GF-13.4.3-small-oscillations", "Small oscillations: Q = Hessian of E_P, normal modes (errata 8, 17)", "GF §13.4.3", smallOscillations);
+SOMA_STUDY_DOUBLE("GF-13.4.3-harmonic-screws", "Harmonic screws are A- and Q-orthogonal (erratum 16)", "GF §13.4.3", harmonicScrews);
+
+}  // namespace soma::studies::gf13::SOMA_UNITY_ID
