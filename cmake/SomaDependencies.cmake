@@ -22,7 +22,7 @@ endif()
 # C++ build is the nlopt_cxx config (a plain find_package(NLopt) picks the C build: DESIGN §9).
 find_package(Ceres REQUIRED)
 find_package(NLopt CONFIG REQUIRED HINTS /usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake/nlopt_cxx)
-# URDF import of serial chains (studies/src/urdf_file.cpp): urdfdom ships a CMake config in
+# URDF import of serial chains (io/src/urdf_file.cpp): urdfdom ships a CMake config in
 # /usr/lib/<arch>/urdfdom/cmake (targets urdfdom::urdfdom_model, which brings console_bridge).
 find_package(urdfdom CONFIG REQUIRED)
 # Parallel parameter-space maps of cuspidal 3R arms (geometry/src/cuspidal/parameter_map.cpp):

@@ -6,6 +6,7 @@
 #include "soma/geometry/dynamics/robot_dynamics.hpp"
 #include "soma/geometry/dynamics/serial_dynamics.hpp"
 #include "soma/geometry/dynamics/spatial_inertia.hpp"
+#include "soma/io/link_inertia_file.hpp"
 #include "soma/geometry/serial/example_robots.hpp"
 #include "soma/studies/study.hpp"
 
@@ -125,7 +126,7 @@ inline double maxAbs(const DM& v) { return v.cwiseAbs().maxCoeff(); }
 inline std::filesystem::path robotsDir() {
   return std::filesystem::path(__FILE__).parent_path().parent_path() / "robots";
 }
-inline std::vector<SpatialInertia<double>> pumaLinks() { return readLinkInertias(robotsDir() / "puma560_dynamics.json"); }
+inline std::vector<SpatialInertia<double>> pumaLinks() { return io::readLinkInertias(robotsDir() / "puma560_dynamics.json"); }
 inline SerialDynamics<double> puma(double grav = 9.81) { return serialDynamicsOf(puma560Robot<double>(), pumaLinks(), grav); }
 
 }  // namespace soma::studies::gf13

@@ -3,7 +3,7 @@
 #include "soma/algebra/errors.hpp"
 #include "soma/geometry/cuspidal/witness6r.hpp"
 #include "soma/render/plot.hpp"
-#include "soma/studies/robot_file.hpp"
+#include "soma/io/robot_file.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -312,7 +312,7 @@ int cuspidalMapCommand(const std::filesystem::path& file, const std::string& map
   if (comma == std::string::npos)
     throw InvalidInput("--map '" + map + "': expected two axes X,Y, e.g. a2:0.5:4:100,a3:0.2:3:100");
   const ParameterAxis x = parseParameterAxis(map.substr(0, comma)), y = parseParameterAxis(map.substr(comma + 1));
-  const RobotFile<double> rf = readRobot<double>(file);
+  const io::RobotFile<double> rf = io::readRobot<double>(file);
   const CuspMap m = cuspMap(rf.robot, x, y, threads);
   int maxCount = 0;
   for (int c : m.counts) maxCount = std::max(maxCount, c);
@@ -349,7 +349,7 @@ int cuspidalMapCommand(const std::filesystem::path& file, const std::string& map
   return 0;
 }
 
-int cuspidal6RCommand(const RobotFile<double>& rf, const std::filesystem::path& file, int poses, double secondsPerPair,
+int cuspidal6RCommand(const io::RobotFile<double>& rf, const std::filesystem::path& file, int poses, double secondsPerPair,
                       bool json, std::ostream& out) {
   const SerialRobot<double>& robot = rf.robot;
   const Witness6R w = findWitness6R(robot, poses, secondsPerPair);
@@ -403,7 +403,7 @@ int cuspidal6RCommand(const RobotFile<double>& rf, const std::filesystem::path& 
 
 int cuspidalCommand(const std::filesystem::path& file, bool json, const std::string& png, std::ostream& out,
                     int poses, double secondsPerPair) {
-  const RobotFile<double> rf = readRobot<double>(file);
+  const io::RobotFile<double> rf = io::readRobot<double>(file);
   const SerialRobot<double>& robot = rf.robot;
   if (robot.dof() == 6) return cuspidal6RCommand(rf, file, poses, secondsPerPair, json, out);
   const CuspidalReport r = analyseCuspidal(robot);

@@ -1,7 +1,7 @@
 #include "soma/studies/fk_command.hpp"
 
-#include "soma/studies/robot_file.hpp"
-#include "soma/studies/urdf_file.hpp"
+#include "soma/io/robot_file.hpp"
+#include "soma/io/urdf_file.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -13,8 +13,8 @@ namespace soma::studies {
 namespace {
 template <class S> int fkImpl(const std::filesystem::path& file, const std::string& tip, const std::string& joints, bool json,
                               std::ostream& out) {
-  const RobotFile<S> rf = readAnyRobot<S>(file, tip);
-  const JointVector<S> q = parseJoints<S>(joints, rf);
+  const io::RobotFile<S> rf = io::readAnyRobot<S>(file, tip);
+  const JointVector<S> q = io::parseJoints<S>(joints, rf);
   const auto t0 = std::chrono::steady_clock::now();
   const SE3<S> T = rf.robot.fk(q);
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -4,9 +4,9 @@
 #include "soma/algebra/tolerance.hpp"
 #include "soma/geometry/serial/closed_form_ik.hpp"
 #include "soma/geometry/serial/general_6r.hpp"
-#include "soma/studies/pose_file.hpp"
-#include "soma/studies/robot_file.hpp"
-#include "soma/studies/urdf_file.hpp"
+#include "soma/io/pose_file.hpp"
+#include "soma/io/robot_file.hpp"
+#include "soma/io/urdf_file.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -91,7 +91,7 @@ template <class S> SerialRobot<S> standardDH(const SerialRobot<S>& robot) {
 /// double, each posture Newton-polished in S and added when it is new. The count is then not
 /// certified, and the notes say so. GF §11.5 (16 complex postures)
 template <class S>
-void completeNumerically(const Robot6R<S>& rows, const SE3<S>& flange, const RobotFile<S>& rf, General6RSolution<S>& g) {
+void completeNumerically(const Robot6R<S>& rows, const SE3<S>& flange, const io::RobotFile<S>& rf, General6RSolution<S>& g) {
   using std::abs;
   using std::atan2;
   using std::cos;
@@ -139,14 +139,14 @@ void completeNumerically(const Robot6R<S>& rows, const SE3<S>& flange, const Rob
 }
 
 template <class S>
-Solution<S> general6R(const RobotFile<S>& rfIn, const SE3<S>& target, Numeric numeric) {
+Solution<S> general6R(const io::RobotFile<S>& rfIn, const SE3<S>& target, Numeric numeric) {
   const std::string name = numeric == Numeric::None ? "general6r" : numeric == Numeric::Ceres ? "ceres" : "nlopt";
   if (rfIn.robot.dof() != 6 || !rfIn.robot.allRevolute())
     throw InvalidInput("ik method " + name + ": needs a robot with 6 revolute joints");
   // The general 6R solver (geometry/serial/general_6r.hpp) takes six standard DH rows and the
   // pose of frame 6 in frame 0: a POE (URDF) or modified-DH robot is rewritten in standard DH
   // first, then the base and tool are stripped.
-  RobotFile<S> rf = rfIn;
+  io::RobotFile<S> rf = rfIn;
   if (rf.robot.convention() != DHConvention::Standard) rf.robot = standardDH(rf.robot);
   Robot6R<S> rows;
   for (int i = 0; i < 6; ++i) rows[i] = rf.robot.dhRows()[i];
@@ -205,8 +205,8 @@ Solution<S> general6R(const RobotFile<S>& rfIn, const SE3<S>& target, Numeric nu
 template <class S>
 int ikImpl(const std::filesystem::path& file, const std::string& tip, const std::filesystem::path& poseFile,
            IkMethod method, Numeric numeric, bool json, std::ostream& out) {
-  const RobotFile<S> rf = readAnyRobot<S>(file, tip);
-  const SE3<S> target = readPose<S>(poseFile);
+  const io::RobotFile<S> rf = io::readAnyRobot<S>(file, tip);
+  const SE3<S> target = io::readPose<S>(poseFile);
   if (method == IkMethod::Auto) method = classifyRobot(rf.robot);
   Solution<S> sol;
   if (method == IkMethod::General6R) sol = general6R<S>(rf, target, numeric);

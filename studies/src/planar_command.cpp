@@ -2,11 +2,11 @@
 
 #include "soma/algebra/errors.hpp"
 #include "soma/geometry/planar/burmester_synthesis.hpp"
+#include "soma/io/planar_scene_file.hpp"
 #include "soma/render/plot.hpp"
 
 #include <chrono>
 #include <fmt/format.h>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 namespace soma::studies {
@@ -19,18 +19,8 @@ using V2 = Vec2<double>;
 json vec(const V2& v) { return json::array({v(0), v(1)}); }
 std::string txt(const V2& v) { return fmt::format("({:.12g}, {:.12g})", v(0), v(1)); }
 
-double number(const json& j, const std::string& key, const std::string& where) {
-  if (!j.contains(key)) throw InvalidInput(where + ": missing \"" + key + "\"");
-  if (!j[key].is_number()) throw InvalidInput(where + ": \"" + key + "\" must be a number");
-  const double v = j[key].get<double>();
-  if (!std::isfinite(v)) throw InvalidInput(where + ": \"" + key + "\" is not finite");
-  return v;
-}
-V2 point(const json& j, const std::string& where) {
-  if (!j.is_array() || j.size() != 2 || !j[0].is_number() || !j[1].is_number())
-    throw InvalidInput(where + ": expected a point [x, y]");
-  return V2(j[0].get<double>(), j[1].get<double>());
-}
+// A point [x, y] of this command's own JSON output (the plot reads the invariants back).
+V2 point(const json& j) { return V2(j[0].get<double>(), j[1].get<double>()); }
 
 struct Output {
   json j = json::object();
@@ -50,15 +40,9 @@ void plotCurve(render::Plot& plot, const std::string& name, const std::vector<V2
   s.markerRadius = r;
 }
 
-void positionsScene(const json& in, double angleUnit, Output& o, const std::string& png) {
-  const json& P = in["positions"];
-  if (!P.is_array()) throw InvalidInput("\"positions\" must be an array of {\"x\", \"y\", \"angle\"}");
+void positionsScene(const io::PlanarScene& in, Output& o, const std::string& png) {
   std::vector<SE2<double>> pos;
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    const std::string w = "position " + std::to_string(i + 1);
-    if (!P[i].is_object()) throw InvalidInput(w + ": expected an object {\"x\", \"y\", \"angle\"}");
-    pos.push_back(SE2<double>(number(P[i], "angle", w) * angleUnit, V2(number(P[i], "x", w), number(P[i], "y", w))));
-  }
+  for (const io::PlanarPosition& p : in.positions) pos.push_back(SE2<double>(p.angle, V2(p.x, p.y)));
   if (pos.size() < 3 || pos.size() > 5)
     throw InvalidInput("\"positions\": need 3, 4 or 5 positions for Burmester synthesis, got " + std::to_string(pos.size()));
   const BurmesterSynthesis<double> bs(pos);
@@ -91,11 +75,8 @@ void positionsScene(const json& in, double angleUnit, Output& o, const std::stri
   }
   if (n == 3) {
     json out = json::array();
-    if (in.contains("circle_points")) {
-      const json& cp = in["circle_points"];
-      if (!cp.is_array()) throw InvalidInput("\"circle_points\" must be an array of [x, y] (moving-frame coordinates)");
-      for (std::size_t k = 0; k < cp.size(); ++k) {
-        const V2 z = point(cp[k], "circle_points[" + std::to_string(k) + "]");
+    if (in.hasCirclePoints) {
+      for (const V2& z : in.circlePoints) {
         const auto m = bs.centreForCirclePoint(z);
         if (!m) {
           out.push_back({{"circle_point", vec(z)}, {"centre", nullptr}, {"note", "its three positions are collinear"}});
@@ -200,14 +181,10 @@ void positionsScene(const json& in, double angleUnit, Output& o, const std::stri
   if (!png.empty()) render::renderPlotPng(plot, png, 1000, 1000);
 }
 
-void fourbarScene(const json& in, double angleUnit, Output& o, const std::string& png) {
-  const json& f = in["fourbar"];
-  if (!f.is_object()) throw InvalidInput("\"fourbar\" must be an object {\"ground\", \"crank\", \"coupler\", \"rocker\"}");
-  if (!f.contains("ground") || !f["ground"].is_array() || f["ground"].size() != 2)
-    throw InvalidInput("fourbar: \"ground\" must be [[x, y], [x, y]] (c1, c4)");
-  const V2 c1 = point(f["ground"][0], "fourbar.ground[0]"), c4 = point(f["ground"][1], "fourbar.ground[1]");
-  const V2 pc = f.contains("coupler_point") ? point(f["coupler_point"], "fourbar.coupler_point") : V2(0, 0);
-  const FourBar<double> fb(c1, c4, number(f, "crank", "fourbar"), number(f, "coupler", "fourbar"), number(f, "rocker", "fourbar"), pc);
+void fourbarScene(const io::PlanarScene& in, Output& o, const std::string& png) {
+  const io::PlanarFourBarInput& f = *in.fourbar;
+  const double angleUnit = in.angleUnit;
+  const FourBar<double> fb(f.c1, f.c4, f.crank, f.coupler, f.rocker, f.couplerPoint);
   const GrashofClass<double> g = fb.classify();
   o.j["grashof"] = grashofName(g.type);
   o.j["grashof_margin"] = g.margin;
@@ -220,22 +197,9 @@ void fourbarScene(const json& in, double angleUnit, Output& o, const std::string
   if (iv.empty()) o.line("  the crank turns fully");
   else
     for (const auto& r : fb.crankIntervals()) o.line(fmt::format("  crank range [{:.10g}, {:.10g}]", r.first / angleUnit, r.second / angleUnit));
-  const double th = in.contains("crank_angle") ? number(in, "crank_angle", "scene") * angleUnit : 0.0;
-  int mode = 1;
-  if (in.contains("mode")) {
-    if (!in["mode"].is_number_integer() || (in["mode"].get<int>() != 1 && in["mode"].get<int>() != -1))
-      throw InvalidInput("\"mode\" must be 1 or -1 (assembly mode)");
-    mode = in["mode"].get<int>();
-  }
-  std::array<double, 5> law{th, 1, 0, 0, 0};
-  if (in.contains("crank_rates")) {
-    const json& r = in["crank_rates"];
-    if (!r.is_array() || r.empty() || r.size() > 4) throw InvalidInput("\"crank_rates\" must be [ω₁, ω̇₁, ω̈₁, ω⃛₁] (1 to 4 numbers)");
-    for (std::size_t k = 0; k < r.size(); ++k) {
-      if (!r[k].is_number()) throw InvalidInput("\"crank_rates\" entries must be numbers");
-      law[k + 1] = r[k].get<double>() * angleUnit;
-    }
-  }
+  const double th = f.crankAngle;
+  const int mode = f.mode;
+  const std::array<double, 5> law{th, f.crankRates[0], f.crankRates[1], f.crankRates[2], f.crankRates[3]};
   const auto pose = fb.solve(th, mode);
   if (!pose) throw InvalidInput(fmt::format("the 4-bar cannot be assembled at crank angle {:.10g}", th / angleUnit));
   const V2 P = fb.couplerPointWorld(*pose);
@@ -294,13 +258,13 @@ void fourbarScene(const json& in, double angleUnit, Output& o, const std::string
   }
   plotCurve(plot, "4-bar", {fb.c1(), pose->c2, pose->c3, fb.c4()}, render::palette::black, false);
   if (inv.contains("inflection_circle")) {
-    const V2 cc = point(inv["inflection_circle"]["centre"], "");
+    const V2 cc = point(inv["inflection_circle"]["centre"]);
     const double r = inv["inflection_circle"]["radius"].get<double>();
     std::vector<V2> circ;
     for (int k = 0; k < 240; ++k) circ.push_back(cc + r * V2(std::cos(k * 6.283185307 / 240), std::sin(k * 6.283185307 / 240)));
     plotCurve(plot, "inflection circle", circ, render::palette::bluishGreen, false);
-    plotCurve(plot, "pole", {point(inv["pole"], "")}, render::palette::vermillion, true, 8);
-    if (inv.contains("ball_point")) plotCurve(plot, "Ball's point", {point(inv["ball_point"], "")}, render::palette::reddishPurple, true, 8);
+    plotCurve(plot, "pole", {point(inv["pole"])}, render::palette::vermillion, true, 8);
+    if (inv.contains("ball_point")) plotCurve(plot, "Ball's point", {point(inv["ball_point"])}, render::palette::reddishPurple, true, 8);
   }
   render::renderPlotPng(plot, png, 1000, 1000);
 }
@@ -309,34 +273,17 @@ void fourbarScene(const json& in, double angleUnit, Output& o, const std::string
 
 int planarCommand(const std::filesystem::path& file, bool asJson, const std::string& png, std::ostream& out) {
   const auto t0 = std::chrono::steady_clock::now();
-  std::ifstream is(file);
-  if (!is) throw InvalidInput("cannot read scene file '" + file.string() + "'");
-  json in;
-  try {
-    in = json::parse(is);
-  } catch (const json::parse_error& e) {
-    throw InvalidInput("scene file '" + file.string() + "' is not valid JSON: " + e.what());
-  }
-  if (!in.is_object()) throw InvalidInput("scene file: expected a JSON object with \"positions\" or \"fourbar\"");
-  double unit = 1;
-  if (in.contains("angles")) {
-    const std::string a = in["angles"].is_string() ? in["angles"].get<std::string>() : "";
-    if (a == "degrees") unit = 3.14159265358979323846 / 180;
-    else if (a != "radians") throw InvalidInput("\"angles\" must be \"degrees\" or \"radians\"");
-  }
+  const io::PlanarScene in = io::readPlanarScene(file);
   Output o;
   o.j["input"] = file.string();
   o.j["scalar"] = "double";
-  o.j["angles"] = unit == 1 ? "radians" : "degrees";
-  if (in.contains("positions") && in.contains("fourbar")) throw InvalidInput("scene file: give \"positions\" or \"fourbar\", not both");
-  if (in.contains("positions")) {
+  o.j["angles"] = in.degrees ? "degrees" : "radians";
+  if (!in.fourbar) {
     o.j["method"] = "Burmester synthesis (bilinear circle equations; 5 positions: resultant of two centre-point cubics, Newton polish)";
-    positionsScene(in, unit, o, png);
-  } else if (in.contains("fourbar")) {
-    o.j["method"] = "closed-form position analysis; coupler-motion jet by Taylor arithmetic; GF §5.3 invariants";
-    fourbarScene(in, unit, o, png);
+    positionsScene(in, o, png);
   } else {
-    throw InvalidInput("scene file: expected \"positions\" (3–5 poses {x, y, angle}) or \"fourbar\"");
+    o.j["method"] = "closed-form position analysis; coupler-motion jet by Taylor arithmetic; GF §5.3 invariants";
+    fourbarScene(in, o, png);
   }
   o.j["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!png.empty()) o.j["png"] = png;

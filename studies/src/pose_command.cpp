@@ -3,7 +3,7 @@
 #include "soma/algebra/dual_quaternion.hpp"
 #include "soma/algebra/screw.hpp"
 #include "soma/algebra/study_parameters.hpp"
-#include "soma/studies/pose_file.hpp"
+#include "soma/io/pose_file.hpp"
 
 #include <chrono>
 #include <fmt/format.h>
@@ -33,7 +33,7 @@ template <class D> std::string toText(const Eigen::MatrixBase<D>& v) {
 template <class S> int run(const std::filesystem::path& file, bool asJson, std::ostream& out) {
   using std::abs;
   const auto t0 = std::chrono::steady_clock::now();
-  const SE3<S> g = readPose<S>(file);
+  const SE3<S> g = io::readPose<S>(file);
   const DualQuaternion<S> h = DualQuaternion<S>::fromSE3(g);
   const StudyParameters<S> sp = StudyParameters<S>::fromSE3(g);
   const SE3Tangent<S> xi = g.log();

@@ -3,49 +3,19 @@
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/tolerance.hpp"
 #include "soma/geometry/parallel/stewart_numeric.hpp"
+#include "soma/io/platform_file.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 namespace soma::studies {
 
 namespace {
 
 using json = nlohmann::json;
-
-template <class S> S number(const json& j, const std::string& where) {
-  if (j.is_number()) return scalarCast<S>(j.get<double>());
-  if (j.is_string()) {
-    const std::string t = j.get<std::string>();
-    std::size_t used = 0;
-    try {
-      (void)std::stod(t, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != t.size()) throw InvalidInput(where + ": \"" + t + "\" is not a number");
-    return fromString<S>(t);
-  }
-  throw InvalidInput(where + ": expected a number, got " + std::string(j.type_name()));
-}
-
-template <class S> std::array<Vec3<S>, 6> points(const json& j, const std::string& where) {
-  if (!j.is_array() || j.size() != 6)
-    throw InvalidInput(where + ": expected an array of 6 points [x, y, z]" +
-                       (j.is_array() ? " (got " + std::to_string(j.size()) + ")" : std::string()));
-  std::array<Vec3<S>, 6> p;
-  for (int i = 0; i < 6; ++i) {
-    const std::string w = where + "[" + std::to_string(i) + "]";
-    if (!j[i].is_array() || j[i].size() != 3) throw InvalidInput(w + ": expected a point [x, y, z]");
-    for (int k = 0; k < 3; ++k) p[i](k) = number<S>(j[i][k], w + "[" + std::to_string(k) + "]");
-  }
-  return p;
-}
 
 json pointsJson(const auto& pts) {
   json a = json::array();
@@ -55,7 +25,7 @@ json pointsJson(const auto& pts) {
 
 template <class S>
 int stewartImpl(const std::filesystem::path& file, const std::string& method, bool json_, std::ostream& out) {
-  const StewartPlatform<S> P = readPlatform<S>(file);
+  const StewartPlatform<S> P = io::readPlatform<S>(file);
   // The start system (a 128-path total-degree homotopy on a random complex platform) is solved
   // once per process; its time is reported apart from the per-platform solve.
   StewartForwardSolution<S> sol;
@@ -154,49 +124,11 @@ int stewartImpl(const std::filesystem::path& file, const std::string& method, bo
 
 }  // namespace
 
-template <class S> StewartPlatform<S> readPlatform(const std::filesystem::path& file) {
-  const std::string origin = file.string();
-  std::ifstream in(file);
-  if (!in) throw InvalidInput(origin + ": cannot open the platform file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  json j;
-  try {
-    j = json::parse(ss.str());
-  } catch (const std::exception& e) {
-    throw InvalidInput(origin + ": not valid JSON (" + e.what() + ")");
-  }
-  if (!j.is_object()) throw InvalidInput(origin + ": a platform must be a JSON object");
-  for (const auto& [key, v] : j.items()) {
-    (void)v;
-    if (key != "base" && key != "platform" && key != "leg_lengths" && key != "name" && key != "comment")
-      throw InvalidInput(origin + ": unknown field \"" + key + "\" (expected base, platform, leg_lengths)");
-  }
-  for (const char* f : {"base", "platform", "leg_lengths"})
-    if (!j.contains(f)) throw InvalidInput(origin + ": missing \"" + std::string(f) + "\"");
-  StewartPlatform<S> P;
-  try {
-    P.base = points<S>(j["base"], "base");
-    P.platform = points<S>(j["platform"], "platform");
-    const json& L = j["leg_lengths"];
-    if (!L.is_array() || L.size() != 6) throw InvalidInput("leg_lengths: expected an array of 6 numbers");
-    for (int i = 0; i < 6; ++i) P.legs[i] = number<S>(L[i], "leg_lengths[" + std::to_string(i) + "]");
-    validateStewartPlatform<S>(P);
-  } catch (const InvalidInput& e) {
-    throw InvalidInput(origin + ": " + e.what());
-  }
-  return P;
-}
-
 int stewartCommand(const std::filesystem::path& platform, const std::string& method, ScalarKind scalar, bool json,
                    std::ostream& out) {
   if (method != "homotopy" && method != "auto" && method != "ceres" && method != "nlopt")
     throw InvalidInput("--method: \"" + method + "\" is not one of auto homotopy ceres nlopt");
   return withScalar(scalar, [&]<class S>() { return stewartImpl<S>(platform, method, json, out); });
 }
-
-#define SOMA_READ_PLATFORM(S) template StewartPlatform<S> readPlatform<S>(const std::filesystem::path&);
-SOMA_FOR_EACH_SCALAR(SOMA_READ_PLATFORM)
-#undef SOMA_READ_PLATFORM
 
 }  // namespace soma::studies

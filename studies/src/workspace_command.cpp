@@ -3,7 +3,7 @@
 #include "soma/algebra/errors.hpp"
 #include "soma/geometry/cuspidal/singular_set.hpp"
 #include "soma/render/plot.hpp"
-#include "soma/studies/robot_file.hpp"
+#include "soma/io/robot_file.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -136,7 +136,7 @@ void plotPathSigma(const SerialRobot<double>& robot, const SafePath& p, const st
 }
 
 int workspaceCommand(const std::filesystem::path& file, const WorkspaceOptions& o, std::ostream& out) {
-  const RobotFile<double> rf = readRobot<double>(file);
+  const io::RobotFile<double> rf = io::readRobot<double>(file);
   const SerialRobot<double>& robot = rf.robot;
   if (o.from.empty() != o.to.empty()) throw InvalidInput("workspace: --from and --to go together");
   const WorkspaceMaps m = sampleWorkspace(robot, o.samples, o.grid);
@@ -145,7 +145,7 @@ int workspaceCommand(const std::filesystem::path& file, const WorkspaceOptions& 
   if (!o.from.empty()) {
     auto joints = [&](const std::string& text, const char* flag) {
       try {
-        return parseJoints<double>(text, rf);
+        return io::parseJoints<double>(text, rf);
       } catch (const InvalidInput& e) {
         throw InvalidInput(std::string("workspace ") + flag + " '" + text + "': " + e.what());
       }

@@ -113,17 +113,4 @@ TEST_CASE("integrators: mpfr runs a few steps and agrees with __float128", "[dyn
   CHECK_THROWS_AS(rk4Step(rq, yq, __float128(-1), zq), InvalidInput);
 }
 
-TEST_CASE("link inertia file: the PUMA 560 data parse; bad data is InvalidInput", "[dynamics][edge]") {
-  const auto links = readLinkInertias(std::filesystem::path(__FILE__).parent_path() / "../../../studies/robots/puma560_dynamics.json");
-  REQUIRE(links.size() == 6);
-  CHECK(links[1].mass() == 17.4);
-  CHECK_THROWS_AS(parseLinkInertias(R"({"links": [{"mass": 0, "com": [0,0,0], "inertia": [1,1,1,0,0,0]}]})", "t"),
-                  InvalidInput);
-  CHECK_THROWS_AS(parseLinkInertias(R"({"links": [{"mass": 1, "com": [0,0], "inertia": [1,1,1,0,0,0]}]})", "t"),
-                  InvalidInput);
-  CHECK_THROWS_AS(parseLinkInertias(R"({"links": [{"mass": 1, "com": [0,0,0], "inertia": [1,1,-1,0,0,0]}]})", "t"),
-                  InvalidInput);
-  CHECK_THROWS_AS(parseLinkInertias(R"({"joints": []})", "t"), InvalidInput);
-}
-
 }  // namespace SOMA_UNITY_ID

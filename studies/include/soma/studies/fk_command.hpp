@@ -11,7 +11,7 @@ namespace soma::studies {
 
 /// Returns 0; throws InvalidInput for a bad robot file or joint list (the caller exits 2).
 /// `robot` is a DESIGN §6 JSON file or a .urdf (the chain from the root link to `tip`, by
-/// default the only leaf link: studies/urdf_file.hpp).
+/// default the only leaf link: io/urdf_file.hpp).
 int fkCommand(const std::filesystem::path& robot, const std::string& joints, ScalarKind scalar,
               bool json, std::ostream& out, const std::string& tip = "");
 

@@ -11,10 +11,6 @@
 
 namespace soma::studies {
 
-/// Reads a platform file {"base": [6 points], "platform": [6 points], "leg_lengths": [6]};
-/// throws InvalidInput naming the file, the field and the defect.
-template <class S> StewartPlatform<S> readPlatform(const std::filesystem::path& file);
-
 /// Returns 0 when the solve is complete (40 complex solutions, every residual ≤ √eps), 1 when
 /// short or a residual is larger; throws InvalidInput for bad input (the caller exits 2).
 int stewartCommand(const std::filesystem::path& platform, const std::string& method, ScalarKind scalar,

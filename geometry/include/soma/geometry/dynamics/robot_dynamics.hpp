@@ -1,12 +1,7 @@
 #pragma once
-// Link inertial data for a serial robot and the SerialDynamics model of a SerialRobot (GF §13.2).
-//
-// Robot files (studies/robots/*.json) may carry an additive "links" array, one object per moving
-// link, in the link's own frame (the DH frame F_i of link i for a DH robot, the joint frame for a
-// POE robot, at the home configuration θ = 0):
-//   {"mass": m, "com": [x, y, z], "inertia": [Ixx, Iyy, Izz, Ixy, Iyz, Ixz]}
-// with the inertia tensor about the centre of mass, axes parallel to the link frame (kg·m², SI).
-// readLinkInertias parses it (double; InvalidInput names the link and the defect, e.g. mass ≤ 0).
+// The SerialDynamics model of a SerialRobot and its links' inertias (GF §13.2). The inertias of
+// a robot file's "links" array are read by soma::io::readLinkInertias (io/link_inertia_file.hpp),
+// each in its link's own home frame.
 //
 // serialDynamicsOf is header-only (it is instantiated where a SerialRobot is at hand, in studies
 // and tests, so soma_geometry_dynamics does not link soma_geometry_serial). The dynamics variable
@@ -14,15 +9,9 @@
 #include "soma/geometry/dynamics/serial_dynamics.hpp"
 #include "soma/geometry/serial/serial_robot.hpp"
 
-#include <filesystem>
 #include <vector>
 
 namespace soma {
-
-/// The "links" array of a robot JSON file. InvalidInput if the file cannot be read, has no "links",
-/// or a link has a missing field, a non-positive mass, or an inertia that is not positive definite.
-std::vector<SpatialInertia<double>> readLinkInertias(const std::filesystem::path& file);
-std::vector<SpatialInertia<double>> parseLinkInertias(const std::string& jsonText, const std::string& origin);
 
 /// The SerialDynamics model of `robot` with link i's inertia given in its own home frame
 /// (robot.frames(−offsets)[i + 1]) and gravity g along −z of the base frame. GF §13.2.2

@@ -1,7 +1,7 @@
-// URDF import of serial chains (studies/urdf_file.hpp): the PUMA 560 written as a URDF from its
+// URDF import of serial chains (io/urdf_file.hpp): the PUMA 560 written as a URDF from its
 // DH table has the forward kinematics, the Jacobian and the limits of the DH robot; fixed joints
 // fold in, a tip picks one chain of a tree, and every defect is an InvalidInput naming it.
-#include "soma/studies/urdf_file.hpp"
+#include "soma/io/urdf_file.hpp"
 
 #include "support/scalars.hpp"
 
@@ -10,7 +10,7 @@
 namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
 
 using namespace soma;
-using namespace soma::studies;
+using namespace soma::io;
 using Catch::Contains;
 
 namespace {
@@ -55,7 +55,7 @@ TEMPLATE_TEST_CASE("URDF PUMA 560 = DH PUMA 560: FK, Jacobian, limits at random 
 
 TEST_CASE("URDF: fixed joints fold in, --tip picks one chain of a tree", "[urdf]") {
   using S = double;
-  const auto file = repoFile("tests/studies/urdf/branching.urdf");
+  const auto file = repoFile("tests/io/urdf/branching.urdf");
   CHECK_THROWS_WITH(readAnyRobot<S>(file), Contains("tree branches") && Contains("left_upper") &&
                                                Contains("right_tool") && Contains("--tip"));
   const RobotFile<S> rf = readAnyRobot<S>(file, "right_tool");
@@ -81,7 +81,7 @@ TEST_CASE("URDF: fixed joints fold in, --tip picks one chain of a tree", "[urdf]
 
 TEST_CASE("URDF: every defect is named", "[urdf]") {
   using S = double;
-  const auto dir = repoFile("tests/studies/urdf");
+  const auto dir = repoFile("tests/io/urdf");
   CHECK_THROWS_WITH(readAnyRobot<S>(dir / "does_not_exist.urdf"), Contains("cannot open the robot file"));
   CHECK_THROWS_WITH(readAnyRobot<S>(dir / "not_xml.urdf"), Contains("not a valid URDF"));
   CHECK_THROWS_WITH(readAnyRobot<S>(dir / "single_link.urdf"), Contains("no chain"));

@@ -1,11 +1,10 @@
-#include "soma/studies/pose_file.hpp"
+#include "soma/io/pose_file.hpp"
 
-#include <nlohmann/json.hpp>
+#include "soma/algebra/errors.hpp"
+#include "soma/io/json_file.hpp"
+#include "soma/io/number.hpp"
 
-#include <fstream>
-#include <sstream>
-
-namespace soma::studies {
+namespace soma::io {
 
 namespace {
 using json = nlohmann::json;
@@ -15,32 +14,16 @@ struct Precision {
   bool sawDouble = false;
 };
 
-template <class S> S number(const json& j, const std::string& where, Precision& p) {
-  if (j.is_number()) {
-    if (j.is_number_float()) p.sawDouble = true;  // integers are exact in every scalar
-    return scalarCast<S>(j.get<double>());
-  }
-  if (j.is_string()) {
-    const std::string t = j.get<std::string>();
-    try {
-      std::size_t used = 0;
-      (void)std::stod(t, &used);  // the text must be a whole decimal number
-      if (used != t.size()) throw std::invalid_argument(t);
-    } catch (const std::exception&) {
-      throw InvalidInput(where + ": \"" + t + "\" is not a number");
-    }
-    return fromString<S>(t);
-  }
-  throw InvalidInput(where + ": expected a number, got " + std::string(j.type_name()));
-}
-
 template <class S, int N>
-Eigen::Matrix<S, N, 1> vector(const json& j, const std::string& where, Precision& p) {
+Eigen::Matrix<S, N, 1> vector(const json& j, const KeyPath& where, Precision& p) {
   if (!j.is_array() || j.size() != std::size_t(N))
-    throw InvalidInput(where + ": expected an array of " + std::to_string(N) + " numbers");
+    throw InvalidInput(where.str() + ": expected an array of " + std::to_string(N) + " numbers");
   Eigen::Matrix<S, N, 1> v;
-  for (int i = 0; i < N; ++i) v(i) = number<S>(j[i], where + "[" + std::to_string(i) + "]", p);
-  if (!allFinite(v)) throw InvalidInput(where + ": has a NaN or infinite entry");
+  for (int i = 0; i < N; ++i) {
+    NumberSource source{};
+    v(i) = readNumber<S>(j[i], where.index(std::size_t(i)), &source);
+    if (source == NumberSource::JsonDouble) p.sawDouble = true;  // integers are exact in every scalar
+  }
   return v;
 }
 /// True when the numbers came (partly) as JSON doubles and S is finer than double: unit and
@@ -50,27 +33,20 @@ template <class S> bool inputIsDouble(const Precision& p) {
 }
 }  // namespace
 
-template <class S> SE3<S> parsePose(const std::string& text, const std::string& origin) {
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw InvalidInput(origin + ": not valid JSON (" + e.what() + ")");
-  }
+template <class S> SE3<S> poseFromJson(const json& j, const std::string& origin) {
   if (!j.is_object()) throw InvalidInput(origin + ": a pose must be a JSON object");
-  for (const auto& [key, value] : j.items())
-    if (key != "rotation" && key != "quaternion" && key != "translation")
-      throw InvalidInput(origin + ": unknown field \"" + key +
-                         "\" (a pose has \"rotation\" or \"quaternion\", and \"translation\")");
+  checkKeys(j, {"rotation", "quaternion", "translation"}, origin,
+            "(a pose has \"rotation\" or \"quaternion\", and \"translation\")");
   if (!j.contains("translation")) throw InvalidInput(origin + ": missing \"translation\"");
+  const KeyPath root(origin);
   Precision prec;
-  const Vec3<S> t = vector<S, 3>(j["translation"], origin + ": translation", prec);
+  const Vec3<S> t = vector<S, 3>(j["translation"], root.key("translation"), prec);
   const bool hasR = j.contains("rotation"), hasQ = j.contains("quaternion");
   if (hasR == hasQ)
     throw InvalidInput(origin + ": give exactly one of \"rotation\" (3x3) and \"quaternion\" [w,x,y,z]");
   try {
     if (hasQ) {
-      const Vec4<S> qv = vector<S, 4>(j["quaternion"], origin + ": quaternion", prec);
+      const Vec4<S> qv = vector<S, 4>(j["quaternion"], root.key("quaternion"), prec);
       const Quat<S> q(qv(0), qv(1), qv(2), qv(3));
       if (!inputIsDouble<S>(prec)) return SE3<S>(SO3<S>::fromQuaternion(q), t);
       // Judged at double precision (the data's), then taken exactly unit in S.
@@ -83,8 +59,7 @@ template <class S> SE3<S> parsePose(const std::string& text, const std::string& 
       throw InvalidInput(origin + ": rotation: expected 3 rows of 3 numbers");
     Mat3<S> m;
     for (int i = 0; i < 3; ++i)
-      m.row(i) =
-          vector<S, 3>(r[i], origin + ": rotation[" + std::to_string(i) + "]", prec).transpose();
+      m.row(i) = vector<S, 3>(r[std::size_t(i)], root.key("rotation").index(std::size_t(i)), prec).transpose();
     if (!inputIsDouble<S>(prec)) return SE3<S>(SO3<S>::fromMatrix(m), t);
     // Judged at double precision (the data's), then the rotation of m in S (Shepperd's chart,
     // normalised): the data cannot be orthogonal to better than double's rounding.
@@ -97,18 +72,19 @@ template <class S> SE3<S> parsePose(const std::string& text, const std::string& 
   }
 }
 
+template <class S> SE3<S> parsePose(const std::string& text, const std::string& origin) {
+  return poseFromJson<S>(parseJson(text, origin), origin);
+}
+
 template <class S> SE3<S> readPose(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw InvalidInput(file.string() + ": cannot open the pose file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parsePose<S>(ss.str(), file.string());
+  return parsePose<S>(readTextFile(file, "pose"), file.string());
 }
 
 #define SOMA_POSE_INSTANTIATE(S)                                              \
   template SE3<S> parsePose<S>(const std::string&, const std::string&);       \
-  template SE3<S> readPose<S>(const std::filesystem::path&);
+  template SE3<S> readPose<S>(const std::filesystem::path&);                  \
+  template SE3<S> poseFromJson<S>(const json&, const std::string&);
 SOMA_FOR_EACH_SCALAR(SOMA_POSE_INSTANTIATE)
 #undef SOMA_POSE_INSTANTIATE
 
-}  // namespace soma::studies
+}  // namespace soma::io

@@ -6,26 +6,32 @@
 // (standard A_i = Rz(θ_i)·Tz(d_i)·Tx(a_i)·Rx(α_i); modified: a, alpha of the previous link).
 // POE joints: {"type", "axis": [x,y,z], "point": [x,y,z], "offset", "limits"} and the tool's
 // home pose "home" (required for poe). "base"/"tool" (dh, mdh) are optional poses, parsed like
-// pose files. Numbers may be JSON numbers or decimal strings (exact in mpfr/float128).
+// pose files. Numbers may be JSON numbers or decimal strings (exact in mpfr/float128), read by the
+// one number reader (number.hpp). An optional "links" array carries the links' inertial data
+// (link_inertia_file.hpp), read into RobotFile::links.
 // Angles (alpha, theta, revolute offsets and limits) are in the file's unit. Every defect is an
 // InvalidInput naming the file, the joint and the field.
+#include "soma/geometry/dynamics/spatial_inertia.hpp"
 #include "soma/geometry/serial/serial_robot.hpp"
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
-namespace soma::studies {
+namespace soma::io {
 
 template <class S> struct RobotFile {
   SerialRobot<S> robot;
   bool degrees = false;  ///< joint angles in and out of the CLI are in degrees
+  /// The file's "links" (GF ch. 13 inertial data, double), empty when it has none.
+  std::vector<SpatialInertia<double>> links;
 };
 
 template <class S> RobotFile<S> parseRobot(const std::string& text, const std::string& origin);
 template <class S> RobotFile<S> readRobot(const std::filesystem::path& file);
 
-/// Parse "q1,q2,..." (numbers, decimal text exact in S); the robot's angle unit applies to
-/// revolute joints. Throws InvalidInput naming the bad entry.
+/// Parse "q1,q2,..." (decimal numbers exact in S, spaces around an entry allowed); the robot's
+/// angle unit applies to revolute joints. Throws InvalidInput naming the bad entry.
 template <class S> JointVector<S> parseJoints(const std::string& text, const RobotFile<S>& robot);
 
 #define SOMA_ROBOT_FILE_EXTERN(S)                                                              \
@@ -35,4 +41,4 @@ template <class S> JointVector<S> parseJoints(const std::string& text, const Rob
 SOMA_FOR_EACH_SCALAR(SOMA_ROBOT_FILE_EXTERN)
 #undef SOMA_ROBOT_FILE_EXTERN
 
-}  // namespace soma::studies
+}  // namespace soma::io

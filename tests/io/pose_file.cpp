@@ -1,12 +1,12 @@
 // Pose files: both rotation forms, exact decimal strings, and every defect named in the message.
-#include "soma/studies/pose_file.hpp"
+#include "soma/io/pose_file.hpp"
 
 #include "support/scalars.hpp"
 
 namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
 
 using namespace soma;
-using namespace soma::studies;
+using namespace soma::io;
 using Catch::Contains;
 
 TEMPLATE_TEST_CASE("parsePose reads a rotation matrix or a quaternion", "[pose]", SOMA_TEST_SCALARS) {
@@ -37,9 +37,11 @@ TEST_CASE("parsePose names the defect of bad input", "[pose]") {
                     Contains("exactly one of"));
   CHECK_THROWS_WITH(parsePose<S>(R"({"rot": 1, )" + t + "}", "p.json"), Contains("unknown field \"rot\""));
   CHECK_THROWS_WITH(parsePose<S>(R"({"rotation": [[1,0,0],[0,1,0],[0,0,1]], "translation": [0, "nan", 0]})", "p.json"),
-                    Contains("translation: has a NaN"));
+                    Contains("p.json: translation[1]: \"nan\" is not a decimal number"));
   CHECK_THROWS_WITH(parsePose<S>(R"({"rotation": [[1,0,0],[0,1,0],[0,0,1]], "translation": [0, "x", 0]})", "p.json"),
-                    Contains("translation[1]: \"x\" is not a number"));
+                    Contains("p.json: translation[1]: \"x\" is not a decimal number"));
+  CHECK_THROWS_WITH(parsePose<S>(R"({"rotation": [[1,0,0],[0,1,"0x10"],[0,0,1]], )" + t + "}", "p.json"),
+                    Contains("p.json: rotation[1][2]: \"0x10\" is not a decimal number (hexadecimal)"));
   CHECK_THROWS_WITH(parsePose<S>(R"({"rotation": [[1,0,0],[0,1,0]], )" + t + "}", "p.json"),
                     Contains("3 rows"));
   CHECK_THROWS_WITH(parsePose<S>(R"({"rotation": [[1,0.1,0],[0,1,0],[0,0,1]], )" + t + "}", "p.json"),

@@ -8,12 +8,12 @@
 // urdfdom reads numbers in double: a URDF robot is exact to double's rounding in every scalar.
 // Every defect (no file, not URDF, no chain, a floating/planar/mimic joint, a branching tree
 // without a tip, a non-unit axis) is an InvalidInput naming the file, the joint or link.
-#include "soma/studies/robot_file.hpp"
+#include "soma/io/robot_file.hpp"
 
 #include <filesystem>
 #include <string>
 
-namespace soma::studies {
+namespace soma::io {
 
 /// Parse URDF text; `tip` empty = the unique leaf link.
 template <class S>
@@ -33,4 +33,4 @@ RobotFile<S> readAnyRobot(const std::filesystem::path& file, const std::string& 
 SOMA_FOR_EACH_SCALAR(SOMA_URDF_FILE_EXTERN)
 #undef SOMA_URDF_FILE_EXTERN
 
-}  // namespace soma::studies
+}  // namespace soma::io

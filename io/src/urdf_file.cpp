@@ -1,19 +1,18 @@
-#include "soma/studies/urdf_file.hpp"
+#include "soma/io/urdf_file.hpp"
 
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/tolerance.hpp"
+#include "soma/io/json_file.hpp"
 
 #include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <mutex>
-#include <sstream>
 #include <vector>
 
-namespace soma::studies {
+namespace soma::io {
 
 namespace {
 
@@ -145,11 +144,7 @@ RobotFile<S> parseUrdf(const std::string& xml, const std::string& origin, const 
 }
 
 template <class S> RobotFile<S> readUrdf(const std::filesystem::path& file, const std::string& tip) {
-  std::ifstream in(file);
-  if (!in) throw InvalidInput(file.string() + ": cannot open the robot file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parseUrdf<S>(ss.str(), file.string(), tip);
+  return parseUrdf<S>(readTextFile(file, "robot"), file.string(), tip);
 }
 
 template <class S> RobotFile<S> readAnyRobot(const std::filesystem::path& file, const std::string& tip) {
@@ -165,4 +160,4 @@ template <class S> RobotFile<S> readAnyRobot(const std::filesystem::path& file, 
 SOMA_FOR_EACH_SCALAR(SOMA_URDF_FILE_INSTANTIATE)
 #undef SOMA_URDF_FILE_INSTANTIATE
 
-}  // namespace soma::studies
+}  // namespace soma::io

@@ -1,0 +1,101 @@
+// The robot, platform and planar scene readers: values read as written (decimal strings exact in S),
+// and the number reader's errors reported with the file and the key path of the value.
+#include "soma/io/planar_scene_file.hpp"
+#include "soma/io/platform_file.hpp"
+#include "soma/io/robot_file.hpp"
+
+#include "support/scalars.hpp"
+
+#include <filesystem>
+
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
+using namespace soma;
+using namespace soma::io;
+using Catch::Contains;
+
+namespace {
+std::filesystem::path repoFile(const std::string& rel) {
+  return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / rel;
+}
+// A 2R planar arm, standard DH, with one field replaced by `alpha2`.
+std::string twoR(const std::string& alpha2) {
+  return R"({"convention": "dh", "joints": [{"a": 1, "alpha": 0, "d": 0, "theta": 0},
+                                           {"a": "0.1", "alpha": )" + alpha2 + R"(, "d": 0, "theta": 0}]})";
+}
+}  // namespace
+
+TEMPLATE_TEST_CASE("robot file: decimal strings exact in S, number errors with the key path", "[io][robot]",
+                   SOMA_TEST_SCALARS) {
+  using S = TestType;
+  const RobotFile<S> rf = parseRobot<S>(twoR("0"), "robot.json");
+  REQUIRE(rf.robot.dof() == 2);
+  // The DH length "0.1" is S's own 0.1 (not the double's).
+  CHECK(rf.robot.dhRows()[1].a == fromString<S>("0.1"));
+  CHECK(rf.robot.dhRows()[0].a == S(1));
+  CHECK_THROWS_WITH(parseRobot<S>(twoR("\"0x10\""), "robot.json"),
+                    "robot.json: joints[1].alpha: \"0x10\" is not a decimal number (hexadecimal)");
+  CHECK_THROWS_WITH(parseRobot<S>(twoR("\"inf\""), "robot.json"), Contains("joints[1].alpha: \"inf\" is not a decimal number"));
+  CHECK_THROWS_WITH(parseRobot<S>(twoR("\"1e999999999\""), "robot.json"), Contains("joints[1].alpha: \"1e999999999\" is outside the range"));
+  CHECK_THROWS_WITH(parseRobot<S>(twoR("1e400"), "robot.json"), Contains("robot.json: joints[1].alpha: 1e400 is outside the range of a JSON number"));
+  CHECK_THROWS_WITH(parseRobot<S>(twoR("true"), "robot.json"), "robot.json: joints[1].alpha: expected a number, got boolean");
+  // --joints: the same reader; spaces around an entry belong to the list, not to the number.
+  const JointVector<S> q = parseJoints<S>("0.5, -0.25", rf);
+  CHECK(q(0) == fromString<S>("0.5"));
+  CHECK(q(1) == fromString<S>("-0.25"));
+  CHECK_THROWS_WITH(parseJoints<S>("0x10,0", rf), "--joints value 1: \"0x10\" is not a decimal number (hexadecimal)");
+  CHECK_THROWS_WITH(parseJoints<S>("0,nan", rf), Contains("--joints value 2: \"nan\" is not a decimal number"));
+  CHECK_THROWS_WITH(parseJoints<S>("0,", rf), Contains("--joints: 1 values given, the robot has 2 joints"));
+}
+
+TEST_CASE("robot file: 3.5e38 is a length in double, not in float", "[io][robot]") {
+  CHECK(parseRobot<double>(twoR("0").replace(twoR("0").find("\"a\": 1"), 6, "\"a\": \"3.5e38\""), "r").robot.dof() == 2);
+  CHECK_THROWS_WITH(parseRobot<float>(twoR("0").replace(twoR("0").find("\"a\": 1"), 6, "\"a\": \"3.5e38\""), "r"),
+                    "r: joints[0].a: \"3.5e38\" is outside the range of float (it overflows to infinity)");
+}
+
+TEMPLATE_TEST_CASE("platform file: the general platform; number errors with the key path", "[io][platform]",
+                   double, mpfr::mpreal) {
+  using S = TestType;
+  const StewartPlatform<S> P = readPlatform<S>(repoFile("studies/platforms/general.json"));
+  CHECK(P.base[0](0) == scalarCast<S>(0.854648));  // the file's first base coordinate, a JSON double
+  const std::string pts = "[[1,0,0],[0,1,0],[-1,0,0],[0,-1,0],[1,1,0.5],[-1,1,0.2]]";
+  auto platform = [&](const std::string& legs) {
+    return R"({"base": )" + pts + R"(, "platform": )" + pts + R"(, "leg_lengths": )" + legs + "}";
+  };
+  const StewartPlatform<S> Q = parsePlatform<S>(platform(R"([1, 1, 1, 1, 1, "1.1"])"), "p.json");
+  CHECK(Q.legs[5] == fromString<S>("1.1"));
+  CHECK_THROWS_WITH(parsePlatform<S>(platform(R"([1, 1, 1, 1, 1, "0x10"])"), "p.json"),
+                    "p.json: leg_lengths[5]: \"0x10\" is not a decimal number (hexadecimal)");
+  CHECK_THROWS_WITH(parsePlatform<S>(platform("[1, 1, 1, 1, 1]"), "p.json"),
+                    "p.json: leg_lengths: expected an array of 6 numbers");
+  CHECK_THROWS_WITH(parsePlatform<S>(R"({"base": [[1,0,0],[0,1,0],[-1,0,0],[0,-1,0],[1,1,0.5],[-1,1," 0"]], "platform": )" + pts +
+                                         R"(, "leg_lengths": [1,1,1,1,1,1]})", "p.json"),
+                    "p.json: base[5][2]: \" 0\" is not a decimal number (leading or trailing space)");
+  CHECK_THROWS_WITH(parsePlatform<S>(platform("[1,1,1,1,1,1], \"legs\": 1"), "p.json"),
+                    "p.json: unknown field \"legs\" (expected base, platform, leg_lengths)");
+}
+
+TEST_CASE("planar scene file: positions, circle points and a 4-bar, in radians", "[io][planar]") {
+  const auto dir = repoFile("tests/geometry/planar/scenes");
+  const PlanarScene three = readPlanarScene(dir / "three_positions.json");
+  REQUIRE(three.positions.size() == 3);
+  CHECK(three.positions[1].x == 1);
+  CHECK(three.positions[2].angle == 0.7);
+  REQUIRE(three.hasCirclePoints);
+  REQUIRE(three.circlePoints.size() == 2);
+  CHECK(three.circlePoints[0] == Vec2<double>(0.5, -0.2));
+  CHECK(!three.fourbar);
+  const PlanarScene fb = readPlanarScene(dir / "fourbar.json");
+  REQUIRE(fb.fourbar);
+  CHECK(fb.fourbar->c4 == Vec2<double>(3, 0));
+  CHECK(fb.fourbar->coupler == 2.5);
+  CHECK(fb.fourbar->couplerPoint == Vec2<double>(0.8, 1.1));
+  CHECK(fb.fourbar->crankAngle == 1.0);
+  CHECK(fb.fourbar->crankRates == std::array<double, 4>{1.0, 0.3, -0.2, 0});  // the rate not given is 0
+  CHECK(fb.fourbar->mode == 1);
+  CHECK_THROWS_WITH(readPlanarScene(dir / "bad_field.json"), "position 1: missing \"angle\"");
+  CHECK_THROWS_WITH(readPlanarScene(dir / "does_not_exist.json"), Contains("cannot read scene file"));
+}
+
+}  // namespace SOMA_UNITY_ID
