@@ -124,7 +124,7 @@ inline double maxAbs(const DM& v) { return v.cwiseAbs().maxCoeff(); }
 
 /// The PUMA 560 (standard DH) with the Armstrong–Khatib–Burdick inertias of puma560_dynamics.json.
 inline std::filesystem::path robotsDir() {
-  return std::filesystem::path(__FILE__).parent_path().parent_path() / "robots";
+  return sourceRoot() / "studies" / "robots";
 }
 inline std::vector<SpatialInertia<double>> pumaLinks() { return io::readLinkInertias(robotsDir() / "puma560_dynamics.json"); }
 inline SerialDynamics<double> puma(double grav = 9.81) { return serialDynamicsOf(puma560Robot<double>(), pumaLinks(), grav); }

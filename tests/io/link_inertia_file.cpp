@@ -16,7 +16,7 @@ using Catch::Contains;
 
 namespace {
 std::filesystem::path pumaDynamics() {
-  return std::filesystem::path(__FILE__).parent_path() / "../../studies/robots/puma560_dynamics.json";
+  return soma::test::repoFile("studies/robots/puma560_dynamics.json");
 }
 }  // namespace
 
@@ -50,7 +50,7 @@ TEST_CASE("the robot reader reads a robot file's links", "[io][dynamics]") {
     CHECK(rf.links[i].matrix() == links[i].matrix());
   }
   // A robot without "links" has none.
-  CHECK(readRobot<double>(std::filesystem::path(__FILE__).parent_path() / "../../studies/robots/puma560.json").links.empty());
+  CHECK(readRobot<double>(soma::test::repoFile("studies/robots/puma560.json")).links.empty());
 }
 
 }  // namespace SOMA_UNITY_ID

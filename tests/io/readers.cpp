@@ -15,9 +15,7 @@ using namespace soma::io;
 using Catch::Contains;
 
 namespace {
-std::filesystem::path repoFile(const std::string& rel) {
-  return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / rel;
-}
+using soma::test::repoFile;
 // A 2R planar arm, standard DH, with one field replaced by `alpha2`.
 std::string twoR(const std::string& alpha2) {
   return R"({"convention": "dh", "joints": [{"a": 1, "alpha": 0, "d": 0, "theta": 0},

@@ -14,10 +14,7 @@ using namespace soma::io;
 using Catch::Contains;
 
 namespace {
-// The repository's files, found from this source file (no working-directory assumption).
-std::filesystem::path repoFile(const std::string& rel) {
-  return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / rel;
-}
+using soma::test::repoFile;
 }  // namespace
 
 TEMPLATE_TEST_CASE("URDF PUMA 560 = DH PUMA 560: FK, Jacobian, limits at random joints", "[urdf]", double,

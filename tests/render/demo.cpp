@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "support/repo_file.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -104,7 +106,7 @@ std::filesystem::path demoDir() {
   const char* env = std::getenv("SOMA_RENDER_DEMO_DIR");
   if (env && *env) return env;
   // <source>/tests/render/demo.cpp -> <source>/out/render-demo
-  return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "out" / "render-demo";
+  return soma::test::repoFile("out/render-demo");
 }
 }  // namespace
 

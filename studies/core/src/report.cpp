@@ -180,10 +180,10 @@ std::string gitCommit() {
 #ifdef SOMA_GIT_COMMIT
   return SOMA_GIT_COMMIT;
 #else
-  // The source tree this file was compiled from (studies/core/src/report.cpp -> repository root).
+  // The source tree the studies were compiled from.
   namespace fs = std::filesystem;
   std::error_code ec;
-  const fs::path root = fs::path(__FILE__).parent_path().parent_path().parent_path().parent_path();
+  const fs::path root = sourceRoot();
   if (!fs::exists(root / ".git", ec)) return {};
   const std::string git = "GIT_OPTIONAL_LOCKS=0 git -C " + shellQuote(root.string());
   std::string head = runCommand(git + " rev-parse --short=12 HEAD 2>/dev/null");

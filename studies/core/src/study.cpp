@@ -62,6 +62,8 @@ void registerStudy(Study s) {
 
 const std::vector<Study>& registry() { return mutableRegistry(); }
 
+std::filesystem::path sourceRoot() { return std::filesystem::path(SOMA_SOURCE_DIR); }
+
 const Study* findStudy(const std::string& id) {
   for (const auto& s : registry())
     if (s.id == id) return &s;

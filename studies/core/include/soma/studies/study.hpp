@@ -100,6 +100,9 @@ struct Study {
 const std::vector<Study>& registry();
 const Study* findStudy(const std::string& id);
 void registerStudy(Study s);
+/// The root of the source tree the studies were built from (its example robots are under
+/// studies/robots/): SOMA_SOURCE_DIR, set for study.cpp by studies/CMakeLists.txt.
+std::filesystem::path sourceRoot();
 
 struct Registrar {
   explicit Registrar(Study s) { registerStudy(std::move(s)); }
