@@ -232,7 +232,7 @@ int main(int argc, char** argv) {
 
   // soma workspace (issue 9: OMPL reachability / dexterity maps, singularity-avoiding plans)
   std::string wsRobot;
-  WorkspaceOptions wsOpt;
+  WorkspaceCommandOptions wsOpt;
   auto* ws = app.add_subcommand("workspace", "reachability and dexterity maps from OMPL samples, the singular "
                                              "boundary, a plan keeping away from singularities");
   ws->add_option("robot", wsRobot, "robot JSON (DESIGN §6)")->required();

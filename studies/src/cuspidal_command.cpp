@@ -1,7 +1,6 @@
 #include "soma/studies/cuspidal_command.hpp"
 
 #include "soma/algebra/errors.hpp"
-#include "soma/geometry/cuspidal/witness6r.hpp"
 #include "soma/render/plot.hpp"
 #include "soma/studies/robot_file.hpp"
 
@@ -9,7 +8,6 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 namespace soma::studies {
@@ -52,7 +50,7 @@ void addJointCurve(render::Plot& plot, const std::vector<Eigen::Vector2d>& pts, 
   flush(name);
 }
 
-void addAspectCells(render::Plot& plot, const CuspidalReport& r) {
+void addAspectCells(render::Plot& plot, const CuspidalAnalysis& r) {
   const AspectMap& m = r.aspectMap;
   render::PlotCells cells;
   cells.x0 = -kPi;
@@ -82,22 +80,7 @@ std::string fmtNum(double v) { return fmt::format("{:.6g}", v); }
 
 }  // namespace
 
-CuspidalReport analyseCuspidal(const SerialRobot<double>& robot, bool witness, int aspectGrid) {
-  const auto t0 = std::chrono::steady_clock::now();
-  CuspidalReport r;
-  r.cusps = findCuspsAdaptive(robot);
-  r.verdictSeconds = r.cusps.seconds;
-  r.cuspidal = !r.cusps.cusps.empty();
-  r.dj = detJSeries(robot);
-  r.branches = traceSingularCurves(robot, r.dj);
-  r.reversals = imageReversals(r.branches);
-  r.aspectMap = aspects(r.dj, aspectGrid);
-  if (r.cuspidal && witness) r.witness = findWitness(robot, r.cusps, r.dj, r.aspectMap);
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return r;
-}
-
-void plotJointSpace(const CuspidalReport& r, const std::string& title, const std::filesystem::path& png) {
+void plotJointSpace(const CuspidalAnalysis& r, const std::string& title, const std::filesystem::path& png) {
   render::Plot plot;
   plot.title = title;
   plot.x = angleAxis("θ2 (rad)");
@@ -128,7 +111,7 @@ void plotJointSpace(const CuspidalReport& r, const std::string& title, const std
   render::renderPlotPng(plot, png, 1100, 1000);
 }
 
-void plotSection(const CuspidalReport& r, const std::string& title, const std::filesystem::path& png) {
+void plotSection(const CuspidalAnalysis& r, const std::string& title, const std::filesystem::path& png) {
   render::Plot plot;
   plot.title = title;
   plot.x.label = "ρ = √(x² + y²)";
@@ -191,7 +174,7 @@ void plotSection(const CuspidalReport& r, const std::string& title, const std::f
   render::renderPlotPng(plot, png, 1100, 1000);
 }
 
-void plotWitness(const CuspidalReport& r, const std::string& title, const std::filesystem::path& png) {
+void plotWitness(const CuspidalAnalysis& r, const std::string& title, const std::filesystem::path& png) {
   render::Plot plot;
   plot.title = title;
   plot.x = angleAxis("θ2 (rad)");
@@ -261,13 +244,9 @@ void plotCuspMap(const CuspMap& m, const std::string& title, const std::filesyst
   cells.y1 = m.y.max + hy;
   cells.nx = m.x.n;
   cells.ny = m.y.n;
-  int maxCount = 0;
-  for (int c : m.counts) maxCount = std::max(maxCount, c);
-  std::vector<int> seen(std::size_t(maxCount) + 1, 0);
-  for (int c : m.counts) {
-    cells.cells.push_back(cuspCountColor(c));
-    ++seen[std::size_t(c)];
-  }
+  for (int c : m.counts) cells.cells.push_back(cuspCountColor(c));
+  const std::vector<int> seen = m.histogram();
+  const int maxCount = int(seen.size()) - 1;
   plot.cells.push_back(cells);
   plot.x.min = cells.x0;
   plot.x.max = cells.x1;
@@ -314,10 +293,7 @@ int cuspidalMapCommand(const std::filesystem::path& file, const std::string& map
   const ParameterAxis x = parseParameterAxis(map.substr(0, comma)), y = parseParameterAxis(map.substr(comma + 1));
   const RobotFile<double> rf = readRobot<double>(file);
   const CuspMap m = cuspMap(rf.robot, x, y, threads);
-  int maxCount = 0;
-  for (int c : m.counts) maxCount = std::max(maxCount, c);
-  std::vector<int> hist(std::size_t(maxCount) + 1, 0);
-  for (int c : m.counts) ++hist[std::size_t(c)];
+  const std::vector<int> hist = m.histogram();
   const std::string name = rf.robot.name().empty() ? file.stem().string() : rf.robot.name();
   if (!png.empty())
     plotCuspMap(m, fmt::format("number of cusp points over ({}, {})", x.name, y.name), png);
@@ -349,10 +325,10 @@ int cuspidalMapCommand(const std::filesystem::path& file, const std::string& map
   return 0;
 }
 
-int cuspidal6RCommand(const RobotFile<double>& rf, const std::filesystem::path& file, int poses, double secondsPerPair,
+int cuspidal6RCommand(const RobotFile<double>& rf, const std::filesystem::path& file, const CuspidalAnalysis& a,
                       bool json, std::ostream& out) {
   const SerialRobot<double>& robot = rf.robot;
-  const Witness6R w = findWitness6R(robot, poses, secondsPerPair);
+  const Witness6R& w = a.witness6r;
   const double unit = rf.degrees ? 180.0 / kPi : 1.0;
   auto jointsOut = [&](const JointVector<double>& q) {
     std::vector<double> v;
@@ -363,7 +339,7 @@ int cuspidal6RCommand(const RobotFile<double>& rf, const std::filesystem::path& 
     nlohmann::json j;
     j["robot"] = file.string();
     j["name"] = robot.name();
-    j["method"] = "6R witness search: random poses (seed 20261130), all IK postures, OMPL RRTConnect between same-sign pairs";
+    j["method"] = a.method;
     j["ik_method"] = w.ikMethod;
     j["poses_tried"] = w.posesTried;
     j["pairs_tried"] = w.pairsTried;
@@ -405,8 +381,11 @@ int cuspidalCommand(const std::filesystem::path& file, bool json, const std::str
                     int poses, double secondsPerPair) {
   const RobotFile<double> rf = readRobot<double>(file);
   const SerialRobot<double>& robot = rf.robot;
-  if (robot.dof() == 6) return cuspidal6RCommand(rf, file, poses, secondsPerPair, json, out);
-  const CuspidalReport r = analyseCuspidal(robot);
+  CuspidalOptions options;
+  options.poses = poses;
+  options.secondsPerPair = secondsPerPair;
+  const CuspidalAnalysis r = analyseCuspidality(robot, options);
+  if (r.sixR) return cuspidal6RCommand(rf, file, r, json, out);
   const Arm3RFrame<double>& f = r.cusps.frame;
   const WitnessPath& w = r.witness;
   if (!png.empty()) {
@@ -421,7 +400,7 @@ int cuspidalCommand(const std::filesystem::path& file, bool json, const std::str
     nlohmann::json j;
     j["robot"] = file.string();
     j["name"] = robot.name();
-    j["method"] = "triple root of the IK equation (degree-12 cusp polynomial)";
+    j["method"] = r.method;
     j["scalar"] = r.cusps.scalar;
     if (!r.cusps.conditioning.empty()) j["conditioning"] = r.cusps.conditioning;
     j["seconds"] = r.seconds;

@@ -1,7 +1,7 @@
 #include "soma/studies/workspace_command.hpp"
 
 #include "soma/algebra/errors.hpp"
-#include "soma/geometry/cuspidal/singular_set.hpp"
+#include "soma/geometry/cuspidal/workspace_analysis.hpp"
 #include "soma/render/plot.hpp"
 #include "soma/studies/robot_file.hpp"
 
@@ -14,13 +14,6 @@
 namespace soma::studies {
 
 namespace {
-
-bool isArm3R(const SerialRobot<double>& robot) {
-  if (robot.dof() != 3) return false;
-  for (const auto& j : robot.joints())
-    if (j.type != JointType::Revolute) return false;
-  return true;
-}
 
 void addBoundary(render::Plot& plot, const std::vector<std::vector<Eigen::Vector2d>>& boundary) {
   bool first = true;
@@ -47,18 +40,6 @@ render::PlotCells cellsOf(const WorkspaceMaps& m) {
 std::string fmtNum(double v) { return fmt::format("{:.6g}", v); }
 
 }  // namespace
-
-std::vector<std::vector<Eigen::Vector2d>> singularImages(const SerialRobot<double>& robot) {
-  std::vector<std::vector<Eigen::Vector2d>> out;
-  if (!isArm3R(robot)) return out;
-  const DetJSeries dj = detJSeries(robot);
-  for (const auto& b : traceSingularCurves(robot, dj)) {
-    std::vector<Eigen::Vector2d> pts(b.section.begin(), b.section.end());
-    if (b.closed && !pts.empty()) pts.push_back(pts.front());
-    out.push_back(std::move(pts));
-  }
-  return out;
-}
 
 void plotReachability(const WorkspaceMaps& m, const std::vector<std::vector<Eigen::Vector2d>>& boundary,
                       const std::string& title, const std::filesystem::path& png) {
@@ -135,13 +116,15 @@ void plotPathSigma(const SerialRobot<double>& robot, const SafePath& p, const st
   render::renderPlotPng(plot, png, 1100, 700);
 }
 
-int workspaceCommand(const std::filesystem::path& file, const WorkspaceOptions& o, std::ostream& out) {
+int workspaceCommand(const std::filesystem::path& file, const WorkspaceCommandOptions& o, std::ostream& out) {
   const RobotFile<double> rf = readRobot<double>(file);
   const SerialRobot<double>& robot = rf.robot;
   if (o.from.empty() != o.to.empty()) throw InvalidInput("workspace: --from and --to go together");
-  const WorkspaceMaps m = sampleWorkspace(robot, o.samples, o.grid);
-  const auto boundary = singularImages(robot);
-  std::optional<SafePath> plan;
+  WorkspaceOptions options;
+  options.samples = o.samples;
+  options.grid = o.grid;
+  options.margin = o.margin;
+  options.seconds = o.seconds;
   if (!o.from.empty()) {
     auto joints = [&](const std::string& text, const char* flag) {
       try {
@@ -150,21 +133,14 @@ int workspaceCommand(const std::filesystem::path& file, const WorkspaceOptions& 
         throw InvalidInput(std::string("workspace ") + flag + " '" + text + "': " + e.what());
       }
     };
-    plan = planAwayFromSingularities(robot, joints(o.from, "--from"), joints(o.to, "--to"), o.margin, o.seconds);
+    options.plan = std::make_pair(joints(o.from, "--from"), joints(o.to, "--to"));
   }
+  const WorkspaceAnalysis a = analyseWorkspace(robot, options);
+  const WorkspaceMaps& m = a.maps;
+  const auto& boundary = a.boundary;
+  const std::optional<SafePath>& plan = a.plan;
+  const std::vector<Eigen::Vector2d>& trace = a.planTrace;
   const std::string name = robot.name().empty() ? file.stem().string() : robot.name();
-  std::vector<Eigen::Vector2d> trace;
-  if (plan && plan->found) {
-    const Vec3<double> ez = robot.joints()[0].axis, r1 = robot.joints()[0].point, o0 = robot.base().translation();
-    const Vec3<double> c = r1 + ez * ez.dot(o0 - r1);
-    for (std::size_t k = 0; k + 1 < plan->path.size(); ++k)
-      for (int t = 0; t < 8; ++t) {
-        const JointVector<double> q = plan->path[k] + (plan->path[k + 1] - plan->path[k]) * (t / 8.0);
-        const Vec3<double> d = robot.fk(q).translation() - c;
-        const double z = ez.dot(d);
-        trace.emplace_back(std::sqrt((d - ez * z).squaredNorm()), z);
-      }
-  }
   if (!o.png.empty()) {
     const std::filesystem::path p(o.png);
     const std::filesystem::path stem = p.parent_path() / p.stem();

@@ -2,11 +2,13 @@
 #include "soma/geometry/serial/closed_form_ik.hpp"
 
 #include "soma/algebra/errors.hpp"
+#include "robots.hpp"
 #include "support/scalars.hpp"
 
 namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
 
 using namespace soma;
+using soma::test::puma560;
 using soma::test::rng;
 using soma::test::uniform;
 using soma::test::unitVec3;
@@ -28,18 +30,6 @@ template <class S> bool containsPosture(const Solution<S>& sol, const JointVecto
     if (same) return true;
   }
   return false;
-}
-
-template <class S> SerialRobot<S> puma560(const S& scale = S(1)) {
-  std::vector<DHRow<S>> rows(6);
-  const S h = pi<S>() / S(2);
-  rows[0] = {JointType::Revolute, S(0), h, S(0), S(0)};
-  rows[1] = {JointType::Revolute, S(4318) / S(10000) * scale, S(0), S(0), S(0)};
-  rows[2] = {JointType::Revolute, S(203) / S(10000) * scale, -h, S(15005) / S(100000) * scale, S(0)};
-  rows[3] = {JointType::Revolute, S(0), h, S(4318) / S(10000) * scale, S(0)};
-  rows[4] = {JointType::Revolute, S(0), -h, S(0), S(0)};
-  rows[5] = {JointType::Revolute, S(0), S(0), S(5625) / S(100000) * scale, S(0)};
-  return SerialRobot<S>::fromDH(rows, DHConvention::Standard, SE3<S>(), SE3<S>(), "PUMA 560");
 }
 
 /// T³-like robot (GF §10.3.2, Fig. 10.2): joints 2, 3, 4 parallel, POE home along z.

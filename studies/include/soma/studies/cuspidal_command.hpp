@@ -8,10 +8,8 @@
 // stem + "_witness.png". Runs in double (near-degenerate arms: float128 / mpfr, said in the
 // output). With --map: a parameter-space map of cusp counts (parameter_map.hpp). Bad input →
 // InvalidInput (the caller exits 2).
-#include "soma/geometry/cuspidal/cusps.hpp"
+#include "soma/geometry/cuspidal/cuspidality.hpp"
 #include "soma/geometry/cuspidal/parameter_map.hpp"
-#include "soma/geometry/cuspidal/singular_set.hpp"
-#include "soma/geometry/cuspidal/witness.hpp"
 
 #include <filesystem>
 #include <ostream>
@@ -20,26 +18,11 @@
 
 namespace soma::studies {
 
-struct CuspidalReport {
-  CuspAnalysis<double> cusps;
-  DetJSeries dj;
-  std::vector<SingularBranch> branches;
-  std::vector<Eigen::Vector2d> reversals;  ///< second cusp count (tracing)
-  AspectMap aspectMap;
-  WitnessPath witness;
-  bool cuspidal = false;
-  double verdictSeconds = 0;  ///< findCusps alone
-  double seconds = 0;         ///< everything
-};
-
-/// The full analysis (tracing, aspects on an n × n grid, witness when cuspidal and `witness`).
-CuspidalReport analyseCuspidal(const SerialRobot<double>& robot, bool witness = true, int aspectGrid = 256);
-
 /// Figures: joint space (aspects coloured, singular curves, cusp postures), the workspace section
 /// (singular images and cusp points), the witness path in joint space.
-void plotJointSpace(const CuspidalReport& r, const std::string& title, const std::filesystem::path& png);
-void plotSection(const CuspidalReport& r, const std::string& title, const std::filesystem::path& png);
-void plotWitness(const CuspidalReport& r, const std::string& title, const std::filesystem::path& png);
+void plotJointSpace(const CuspidalAnalysis& r, const std::string& title, const std::filesystem::path& png);
+void plotSection(const CuspidalAnalysis& r, const std::string& title, const std::filesystem::path& png);
+void plotWitness(const CuspidalAnalysis& r, const std::string& title, const std::filesystem::path& png);
 
 /// The cusp-count map as coloured cells (one colour per count, legend swatches), optional
 /// check points (x, y, traced count) marked on top.

@@ -6,7 +6,7 @@
 // plan between two postures keeping σ_min ≥ margin (OMPL RRTConnect). --png FILE writes the
 // reachability map to FILE, the dexterity map to STEM_dexterity.png and, with a plan,
 // σ_min along the path to STEM_path.png. Bad input → InvalidInput (the caller exits 2).
-#include "soma/geometry/cuspidal/workspace.hpp"
+#include "soma/geometry/cuspidal/workspace_analysis.hpp"
 
 #include <filesystem>
 #include <optional>
@@ -16,9 +16,6 @@
 
 namespace soma::studies {
 
-/// The 3R singular curves' images in (ρ, z) (empty unless the robot is a 3R arm).
-std::vector<std::vector<Eigen::Vector2d>> singularImages(const SerialRobot<double>& robot);
-
 void plotReachability(const WorkspaceMaps& m, const std::vector<std::vector<Eigen::Vector2d>>& boundary,
                       const std::string& title, const std::filesystem::path& png);
 void plotDexterity(const WorkspaceMaps& m, const std::vector<std::vector<Eigen::Vector2d>>& boundary,
@@ -27,7 +24,8 @@ void plotDexterity(const WorkspaceMaps& m, const std::vector<std::vector<Eigen::
 void plotPathSigma(const SerialRobot<double>& robot, const SafePath& p, const std::string& title,
                    const std::filesystem::path& png);
 
-struct WorkspaceOptions {
+/// The command line's options (the analysis takes WorkspaceOptions, workspace_analysis.hpp).
+struct WorkspaceCommandOptions {
   int samples = 200000;
   int grid = 120;
   std::string png;
@@ -37,6 +35,6 @@ struct WorkspaceOptions {
   bool json = false;
 };
 
-int workspaceCommand(const std::filesystem::path& robot, const WorkspaceOptions& o, std::ostream& out);
+int workspaceCommand(const std::filesystem::path& robot, const WorkspaceCommandOptions& o, std::ostream& out);
 
 }  // namespace soma::studies
