@@ -6,8 +6,8 @@
 #include "soma/geometry/cuspidal/witness6r.hpp"
 #include "soma/render/plot.hpp"
 #include "soma/render/render.hpp"
-#include "soma/studies/workspace_command.hpp"
-#include "soma/studies/cuspidal_command.hpp"
+#include "soma/studies/cuspidal_figures.hpp"
+#include "soma/studies/workspace_figures.hpp"
 #include "soma/studies/study.hpp"
 
 #include <fmt/format.h>

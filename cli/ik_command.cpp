@@ -1,4 +1,8 @@
-#include "soma/studies/ik_command.hpp"
+// `soma ik ROBOT.json|ROBOT.urdf [--tip LINK] --pose POSE.json [--method M] [--scalar T] [--json]` (DESIGN §6): every
+// real posture of the robot for the pose, each with its residual, the method, the expected count
+// and the time.
+#include "command.hpp"
+#include "scalar_options.hpp"
 
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/tolerance.hpp"
@@ -9,10 +13,13 @@
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
+#include <iostream>
 
-namespace soma::studies {
+namespace soma::cli {
 
 namespace {
+
+using namespace soma::studies;
 
 template <class S>
 int ikImpl(const std::filesystem::path& file, const std::string& tip, const std::filesystem::path& poseFile,
@@ -71,7 +78,6 @@ int ikImpl(const std::filesystem::path& file, const std::string& tip, const std:
   for (const auto& n : sol.notes) out << "note: " << n << "\n";
   return ok ? 0 : 1;
 }
-}  // namespace
 
 int ikCommand(const std::filesystem::path& robot, const std::filesystem::path& pose,
               const std::string& method, ScalarKind scalar, bool json, std::ostream& out,
@@ -81,4 +87,31 @@ int ikCommand(const std::filesystem::path& robot, const std::filesystem::path& p
   return withScalar(scalar, [&]<class S>() { return ikImpl<S>(robot, tip, pose, *m, json, out); });
 }
 
-}  // namespace soma::studies
+class IkCommand : public Command {
+ public:
+  void declare(Spec& spec) override {
+    spec.name = "ik";
+    spec.help = "inverse kinematics: every real posture of a robot for a pose";
+    spec.add("robot", robot_, "robot JSON (DESIGN §6) or URDF (.urdf: a serial chain)").mustBeGiven();
+    spec.add("--tip", tip_, "URDF only: the chain's tip link (default: the only leaf link)");
+    spec.add("--pose", pose_, "pose JSON: {\"rotation\": [[3x3]], \"translation\": [x,y,z]}").mustBeGiven();
+    spec.add("--method", method_, "auto wrist3r arm3r pieper general6r (every scalar); ceres nlopt (double, Newton-polished in other scalars)")
+        .withDefault();
+    scalar_.declare(spec);
+    spec.flag("--json", json_, "print one JSON object");
+  }
+  int run(const Spec&, const Invocation&) override {
+    return ikCommand(robot_, pose_, method_, scalar_.apply(), json_, std::cout, tip_);
+  }
+
+ private:
+  std::string robot_, pose_, method_ = "auto", tip_;
+  ScalarOptions scalar_;
+  bool json_ = false;
+};
+
+}  // namespace
+
+SOMA_CLI_COMMAND(IkCommand, 50);
+
+}  // namespace soma::cli

@@ -1,4 +1,8 @@
-#include "soma/studies/stewart_command.hpp"
+// `soma stewart PLATFORM.json [--method M] [--scalar T] [--json]` (DESIGN §6): every real posture
+// of a Stewart–Gough platform for its six leg lengths (forward kinematics), with the expected
+// count (40), the complex count found, each posture's residual and the time.
+#include "command.hpp"
+#include "scalar_options.hpp"
 
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/tolerance.hpp"
@@ -10,10 +14,12 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <iostream>
 
-namespace soma::studies {
+namespace soma::cli {
 
 namespace {
+
 
 using json = nlohmann::json;
 
@@ -51,6 +57,10 @@ json pointsJson(const auto& pts) {
   for (const auto& p : pts) a.push_back({toDouble(p(0)), toDouble(p(1)), toDouble(p(2))});
   return a;
 }
+
+/// Reads a platform file {"base": [6 points], "platform": [6 points], "leg_lengths": [6]};
+/// throws InvalidInput naming the file, the field and the defect.
+template <class S> StewartPlatform<S> readPlatform(const std::filesystem::path& file);
 
 template <class S>
 int stewartImpl(const std::filesystem::path& file, StewartMethod method, bool json_, std::ostream& out) {
@@ -116,7 +126,6 @@ int stewartImpl(const std::filesystem::path& file, StewartMethod method, bool js
   return ok ? 0 : 1;
 }
 
-}  // namespace
 
 template <class S> StewartPlatform<S> readPlatform(const std::filesystem::path& file) {
   const std::string origin = file.string();
@@ -159,8 +168,32 @@ int stewartCommand(const std::filesystem::path& platform, const std::string& met
   return withScalar(scalar, [&]<class S>() { return stewartImpl<S>(platform, *m, json, out); });
 }
 
-#define SOMA_READ_PLATFORM(S) template StewartPlatform<S> readPlatform<S>(const std::filesystem::path&);
-SOMA_FOR_EACH_SCALAR(SOMA_READ_PLATFORM)
-#undef SOMA_READ_PLATFORM
 
-}  // namespace soma::studies
+class StewartCommand : public Command {
+ public:
+  void declare(Spec& spec) override {
+    spec.name = "stewart";
+    spec.help = "forward kinematics of a Stewart-Gough platform: all 40 complex solutions, the real postures";
+    spec.add("platform", file_, "platform JSON: {\"base\": [6 points], \"platform\": [6 points], "
+                                "\"leg_lengths\": [6]}")
+        .mustBeGiven();
+    spec.add("--method", method_, "homotopy (all 40 complex solutions, certified count), ceres or nlopt (multi-start, real postures only)")
+        .withDefault();
+    scalar_.declare(spec);
+    spec.flag("--json", json_, "print one JSON object");
+  }
+  int run(const Spec&, const Invocation&) override {
+    return stewartCommand(file_, method_, scalar_.apply(), json_, std::cout);
+  }
+
+ private:
+  std::string file_, method_ = "homotopy";
+  ScalarOptions scalar_;
+  bool json_ = false;
+};
+
+}  // namespace
+
+SOMA_CLI_COMMAND(StewartCommand, 90);
+
+}  // namespace soma::cli

@@ -1,120 +1,40 @@
-#include "soma/studies/workspace_command.hpp"
+// `soma workspace ROBOT.json [--samples N] [--grid N] [--png FILE] [--from Q --to Q [--margin M]
+// [--seconds T]] [--json]` (issue 9, GF §5.2.3): reachability and dexterity maps of the tool point
+// in the section (ρ, z) about axis 1 from OMPL's state sampler within the joint limits; for a 3R
+// arm the workspace boundary from the singular curves (images of det J = 0); with --from/--to a
+// plan between two postures keeping σ_min ≥ margin (OMPL RRTConnect). --png FILE writes the
+// reachability map to FILE, the dexterity map to STEM_dexterity.png and, with a plan,
+// σ_min along the path to STEM_path.png. Bad input → InvalidInput (the caller exits 2).
+#include "command.hpp"
 
 #include "soma/algebra/errors.hpp"
-#include "soma/geometry/cuspidal/workspace_analysis.hpp"
-#include "soma/render/plot.hpp"
 #include "soma/studies/robot_file.hpp"
+#include "soma/studies/workspace_figures.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <algorithm>
-#include <cmath>
+#include <iostream>
+#include <optional>
 
-namespace soma::studies {
+namespace soma::cli {
 
 namespace {
 
-void addBoundary(render::Plot& plot, const std::vector<std::vector<Eigen::Vector2d>>& boundary) {
-  bool first = true;
-  for (const auto& b : boundary) {
-    std::vector<double> xs, ys;
-    for (const auto& p : b) xs.push_back(p(0)), ys.push_back(p(1));
-    auto& s = plot.add(first ? "det J = 0 (image)" : "", xs, ys, render::palette::vermillion);
-    s.width = 2.5;
-    first = false;
-  }
-}
-
-render::PlotCells cellsOf(const WorkspaceMaps& m) {
-  render::PlotCells c;
-  c.x0 = 0;
-  c.x1 = m.rhoMax;
-  c.y0 = m.zMin;
-  c.y1 = m.zMax;
-  c.nx = m.nRho;
-  c.ny = m.nZ;
-  return c;
-}
+using namespace soma::studies;
 
 std::string fmtNum(double v) { return fmt::format("{:.6g}", v); }
 
-}  // namespace
-
-void plotReachability(const WorkspaceMaps& m, const std::vector<std::vector<Eigen::Vector2d>>& boundary,
-                      const std::string& title, const std::filesystem::path& png) {
-  render::Plot plot;
-  plot.title = title;
-  plot.x.label = "ρ = distance from axis 1";
-  plot.y.label = "z along axis 1";
-  plot.equalAspect = true;
-  plot.legend = render::LegendCorner::BottomRight;  // the section's outer arc leaves that corner free
-  render::PlotCells c = cellsOf(m);
-  int maxHits = 1;
-  for (int h : m.hits) maxHits = std::max(maxHits, h);
-  for (int h : m.hits)
-    c.cells.push_back(h == 0 ? render::palette::white
-                             : render::colorMap(std::log1p(double(h)) / std::log1p(double(maxHits))));
-  plot.cells.push_back(c);
-  plot.x.min = 0;
-  plot.x.max = 1.3 * m.rhoMax;  // room for the legend right of the outer arc
-  plot.y.min = m.zMin;
-  plot.y.max = m.zMax;
-  addBoundary(plot, boundary);
-  plot.legendSwatches.emplace_back("1 sample", render::colorMap(0.0));
-  plot.legendSwatches.emplace_back(fmt::format("{} (log scale)", maxHits), render::colorMap(1.0));
-  render::renderPlotPng(plot, png, 1000, 1000);
-}
-
-void plotDexterity(const WorkspaceMaps& m, const std::vector<std::vector<Eigen::Vector2d>>& boundary,
-                   const std::vector<Eigen::Vector2d>& pathTrace, const std::string& title,
-                   const std::filesystem::path& png) {
-  render::Plot plot;
-  plot.title = title;
-  plot.x.label = "ρ = distance from axis 1";
-  plot.y.label = "z along axis 1";
-  plot.equalAspect = true;
-  plot.legend = render::LegendCorner::BottomRight;  // the section's outer arc leaves that corner free
-  render::PlotCells c = cellsOf(m);
-  for (double d : m.dexterity) c.cells.push_back(d < 0 ? render::palette::white : render::colorMap(std::clamp(d, 0.0, 1.0)));
-  plot.cells.push_back(c);
-  plot.x.min = 0;
-  plot.x.max = 1.3 * m.rhoMax;  // room for the legend right of the outer arc
-  plot.y.min = m.zMin;
-  plot.y.max = m.zMax;
-  addBoundary(plot, boundary);
-  if (!pathTrace.empty()) {
-    std::vector<double> xs, ys;
-    for (const auto& p : pathTrace) xs.push_back(p(0)), ys.push_back(p(1));
-    auto& s = plot.add("plan (tool point)", xs, ys, render::palette::black);
-    s.width = 3;
-  }
-  plot.legendSwatches.emplace_back("σmin/σmax 0", render::colorMap(0.0));
-  plot.legendSwatches.emplace_back("0.5", render::colorMap(0.5));
-  plot.legendSwatches.emplace_back("1", render::colorMap(1.0));
-  render::renderPlotPng(plot, png, 1000, 1000);
-}
-
-void plotPathSigma(const SerialRobot<double>& robot, const SafePath& p, const std::string& title,
-                   const std::filesystem::path& png) {
-  render::Plot plot;
-  plot.title = title;
-  plot.x.label = "path state";
-  plot.y.label = "σmin (distance from the singularities)";
-  plot.legend = render::LegendCorner::BottomRight;
-  std::vector<double> xs, ys;
-  for (std::size_t k = 0; k < p.path.size(); ++k) {
-    xs.push_back(double(k));
-    ys.push_back(dexteritySingularValues(robot, p.path[k])(0));
-  }
-  if (xs.size() < 2) return;
-  plot.add("σmin along the OMPL path", xs, ys, render::palette::blue).width = 3;
-  auto& m = plot.add("margin asked", {xs.front(), xs.back()}, {p.margin, p.margin}, render::palette::vermillion);
-  m.dashed = true;
-  m.width = 2.5;
-  plot.y.min = 0;
-  render::renderPlotPng(plot, png, 1100, 700);
-}
+/// The command line's options (the analysis takes WorkspaceOptions, workspace_analysis.hpp).
+struct WorkspaceCommandOptions {
+  int samples = 200000;
+  int grid = 120;
+  std::string png;
+  std::string from, to;
+  double margin = 0.05;
+  double seconds = 2.0;
+  bool json = false;
+};
 
 int workspaceCommand(const std::filesystem::path& file, const WorkspaceCommandOptions& o, std::ostream& out) {
   const RobotFile<double> rf = readRobot<double>(file);
@@ -213,4 +133,31 @@ int workspaceCommand(const std::filesystem::path& file, const WorkspaceCommandOp
   return 0;
 }
 
-}  // namespace soma::studies
+class WorkspaceCommand : public Command {
+ public:
+  void declare(Spec& spec) override {
+    spec.name = "workspace";
+    spec.help = "reachability and dexterity maps from OMPL samples, the singular "
+                "boundary, a plan keeping away from singularities";
+    spec.add("robot", robot_, "robot JSON (DESIGN §6)").mustBeGiven();
+    spec.add("--samples", o_.samples, "postures sampled within the joint limits").withDefault();
+    spec.add("--grid", o_.grid, "cells per side of the (ρ, z) maps").withDefault();
+    spec.add("--png", o_.png, "reachability map (also STEM_dexterity.png, STEM_path.png)");
+    spec.add("--from", o_.from, "start posture q1,q2,... (the robot's angle unit)");
+    spec.add("--to", o_.to, "goal posture q1,q2,...");
+    spec.add("--margin", o_.margin, "minimum σmin along the plan (dimensionless)").withDefault();
+    spec.add("--seconds", o_.seconds, "planning time limit").withDefault();
+    spec.flag("--json", o_.json, "print one JSON object");
+  }
+  int run(const Spec&, const Invocation&) override { return workspaceCommand(robot_, o_, std::cout); }
+
+ private:
+  std::string robot_;
+  WorkspaceCommandOptions o_;
+};
+
+}  // namespace
+
+SOMA_CLI_COMMAND(WorkspaceCommand, 70);
+
+}  // namespace soma::cli
