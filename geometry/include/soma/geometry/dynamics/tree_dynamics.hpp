@@ -12,6 +12,7 @@
 // spherical or universal joint or of a floating root made of six basis joints (GF §14.1.1 lines
 // 8752–8762, §14.1.2: a star is a tree with a 6-dof root joint) carry no mass.
 // Defined in tree_dynamics_impl.hpp, instantiated per scalar in geometry/src/dynamics/tree_dynamics_*.cpp.
+#include "soma/algebra/screw_bracket.hpp"
 #include "soma/geometry/dynamics/serial_dynamics.hpp"
 #include "soma/geometry/dynamics/tree_topology.hpp"
 
@@ -94,15 +95,6 @@ template <class S> class TreeDynamics {
   std::vector<Mat6<S>> N0_;
   Vec3<S> g_;
 };
-
-/// [a, b] = ad(a) b for 6-vectors (GF §13.1 convention).
-template <class S> Vec6<S> screwBracket(const Vec6<S>& a, const Vec6<S>& b) {
-  Vec6<S> out;
-  const Vec3<S> wa = a.template head<3>(), va = a.template tail<3>(), wb = b.template head<3>(), vb = b.template tail<3>();
-  out.template head<3>() = wa.cross(wb);
-  out.template tail<3>() = wa.cross(vb) - wb.cross(va);
-  return out;
-}
 
 #define SOMA_TREE_DYNAMICS_EXTERN(S)                                                                          \
   extern template class TreeDynamics<S>;                                                                     \

@@ -6,6 +6,7 @@
 // Q₀ = [[0, I], [I, 0]]; pitch uses Q∞ = [[−2I, 0], [0, 0]] (GF §6.4, §8.1).
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/reciprocal_product.hpp"
+#include "soma/algebra/screw_bracket.hpp"
 #include "soma/algebra/se3.hpp"
 #include "soma/algebra/tolerance.hpp"
 
@@ -30,14 +31,6 @@ template <class S> Mat6<S> infinityForm() {
   Mat6<S> q = Mat6<S>::Zero();
   q.template topLeftCorner<3, 3>() = -S(2) * Mat3<S>::Identity();
   return q;
-}
-/// Lie bracket of twists, [(ω₁, v₁), (ω₂, v₂)] = (ω₁×ω₂, ω₁×v₂ − ω₂×v₁). GF §4.3
-template <class S> Vec6<S> screwBracket(const Vec6<S>& a, const Vec6<S>& b) {
-  const Vec3<S> w1 = a.template head<3>(), v1 = a.template tail<3>();
-  const Vec3<S> w2 = b.template head<3>(), v2 = b.template tail<3>();
-  Vec6<S> r;
-  r << w1.cross(w2), Vec3<S>(w1.cross(v2) - w2.cross(v1));
-  return r;
 }
 
 template <class S> class ScrewSystem {
