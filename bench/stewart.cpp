@@ -49,15 +49,7 @@ const std::vector<StewartPlatform<double>>& pool() {
 
 template <class S> void BM_stewart_homotopy(benchmark::State& st) {
   std::vector<StewartPlatform<S>> ps;
-  for (const auto& p : pool()) {
-    StewartPlatform<S> q;
-    for (int i = 0; i < 6; ++i) {
-      q.base[i] = castMatrix<S>(p.base[i]);
-      q.platform[i] = castMatrix<S>(p.platform[i]);
-      q.legs[i] = scalarCast<S>(p.legs[i]);
-    }
-    ps.push_back(q);
-  }
+  for (const auto& p : pool()) ps.push_back(p.template cast<S>());
   (void)stewartStartSolutions<S>();  // the start system, once per process, outside the timing
   std::size_t i = 0, calls = 0, complete = 0, real = 0, paths = 0;
   std::vector<double> cpu;  // per-platform CPU seconds: the median is robust to the rare escalation

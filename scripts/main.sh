@@ -3,5 +3,5 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh --target soma
-./build/release/studies/soma report --out out/report
+./build/release/cli/soma report --out out/report
 echo "report: $(pwd)/out/report/index.html"

@@ -29,12 +29,14 @@
 #include <soma/algebra/tolerance.hpp>
 
 // geometry
+#include <soma/geometry/cuspidal/cuspidality.hpp>
 #include <soma/geometry/cuspidal/cusps.hpp>
 #include <soma/geometry/cuspidal/parameter_map.hpp>
 #include <soma/geometry/cuspidal/singular_set.hpp>
 #include <soma/geometry/cuspidal/witness.hpp>
 #include <soma/geometry/cuspidal/witness6r.hpp>
 #include <soma/geometry/cuspidal/workspace.hpp>
+#include <soma/geometry/cuspidal/workspace_analysis.hpp>
 #include <soma/geometry/dynamics/biped_dynamics.hpp>
 #include <soma/geometry/dynamics/cl062.hpp>
 #include <soma/geometry/dynamics/constrained_tree.hpp>
@@ -62,6 +64,8 @@
 #include <soma/geometry/lines/regulus.hpp>
 #include <soma/geometry/lines/ruled_surface.hpp>
 #include <soma/geometry/lines/screw_axis.hpp>
+#include <soma/geometry/numeric_polish.hpp>
+#include <soma/geometry/parallel/solve_stewart.hpp>
 #include <soma/geometry/parallel/stewart.hpp>
 #include <soma/geometry/parallel/stewart_numeric.hpp>
 #include <soma/geometry/pga/angle.hpp>
@@ -90,8 +94,10 @@
 #include <soma/geometry/serial/closed_form_ik.hpp>
 #include <soma/geometry/serial/dh.hpp>
 #include <soma/geometry/serial/general_6r.hpp>
+#include <soma/geometry/serial/ik.hpp>
 #include <soma/geometry/serial/ik_solution.hpp>
 #include <soma/geometry/serial/serial_robot.hpp>
+#include <soma/geometry/serial/standard_dh.hpp>
 #include <soma/geometry/statics/grasp.hpp>
 #include <soma/geometry/statics/linear_program.hpp>
 #include <soma/geometry/statics/robot_statics.hpp>

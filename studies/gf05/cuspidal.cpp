@@ -7,8 +7,8 @@
 #include "soma/render/plot.hpp"
 #include "soma/geometry/serial/example_robots.hpp"
 #include "soma/render/render.hpp"
-#include "soma/studies/workspace_command.hpp"
-#include "soma/studies/cuspidal_command.hpp"
+#include "soma/studies/cuspidal_figures.hpp"
+#include "soma/studies/workspace_figures.hpp"
 #include "soma/studies/study.hpp"
 
 #include <fmt/format.h>
@@ -113,7 +113,7 @@ void renderRobotPath(const SerialRobot<S>& robot, const std::vector<JointVector<
 // tracing; Fig. 5.2 by continuation around a cusp; a witness path with OMPL.
 void cuspidalPostureChange(Context& c) {
   const SerialRobot<S> robot = wengerArm();
-  const CuspidalReport r = analyseCuspidal(robot);
+  const CuspidalAnalysis r = analyseCuspidality(robot);
   const auto& cusps = r.cusps.cusps;
   const double L = r.cusps.frame.scale;
   c.checkEqual("cusp points of the orthogonal arm (1, 2, 1.5, 1, 0): triple root of the IK equation", 4,
@@ -368,7 +368,7 @@ void workspaceStudy(Context& c) {
   c.checkResidual("… and the samples come within 1 % of it", std::max(0.0, 1 - sampledMax / singularMax), 0.01);
   c.note(fmt::format("{} OMPL samples in {:.2f} s; {:.1f} % of the bounding grid reached; mean σmin/σmax {:.3f}", m.samples,
                      m.seconds, 100 * m.reachedFraction, m.meanDexterity));
-  const CuspidalReport r = analyseCuspidal(robot);
+  const CuspidalAnalysis r = analyseCuspidality(robot);
   SafePath plan;
   if (r.witness.found) {
     const double margin = 0.5 * std::min(dexteritySingularValues(robot, r.witness.start)(0),

@@ -266,11 +266,7 @@ struct Case {
 /// The case in T, its leg lengths recomputed in T from the defining posture (so that posture is a
 /// solution to the precision of T, not only of double).
 template <class T> StewartPlatform<T> castPlatform(const Case& k) {
-  StewartPlatform<T> Q;
-  for (int i = 0; i < 6; ++i) {
-    Q.base[i] = castMatrix<T>(k.P.base[i]);
-    Q.platform[i] = castMatrix<T>(k.P.platform[i]);
-  }
+  StewartPlatform<T> Q = k.P.template cast<T>();
   Q.legs = stewartLegLengths<T>(Q, k.pose.template cast<T>());
   return Q;
 }

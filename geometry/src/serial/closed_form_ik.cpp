@@ -10,6 +10,8 @@ std::optional<IkMethod> parseIkMethod(std::string_view name) {
   if (name == "arm3r") return IkMethod::Arm3R;
   if (name == "pieper") return IkMethod::Pieper;
   if (name == "general6r") return IkMethod::General6R;
+  if (name == "ceres") return IkMethod::Ceres;
+  if (name == "nlopt") return IkMethod::Nlopt;
   return std::nullopt;
 }
 std::string_view ikMethodName(IkMethod m) {
@@ -19,9 +21,11 @@ std::string_view ikMethodName(IkMethod m) {
     case IkMethod::Arm3R: return "arm3r";
     case IkMethod::Pieper: return "pieper";
     case IkMethod::General6R: return "general6r";
+    case IkMethod::Ceres: return "ceres";
+    case IkMethod::Nlopt: return "nlopt";
   }
   return "auto";
 }
-std::string ikMethodNames() { return "auto wrist3r arm3r pieper general6r"; }
+std::string ikMethodNames() { return "auto wrist3r arm3r pieper general6r ceres nlopt"; }
 
 }  // namespace soma

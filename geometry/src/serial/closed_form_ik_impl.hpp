@@ -851,8 +851,10 @@ Solution<S> solveClosedForm(const SerialRobot<S>& robot, const SE3<S>& target, I
     case IkMethod::Pieper: return solvePieper(robot, target);
     default: break;
   }
-  throw InvalidInput("ik: method general6r is not a closed form (this robot has no three "
-                     "consecutive axes meeting or parallel)");
+  if (method == IkMethod::General6R)
+    throw InvalidInput("ik: method general6r is not a closed form (this robot has no three "
+                       "consecutive axes meeting or parallel)");
+  throw InvalidInput("ik: method " + std::string(ikMethodName(method)) + " is not a closed form (solveIk runs it)");
 }
 
 #define SOMA_INSTANTIATE_CLOSED_FORM_IK(S)                                                               \

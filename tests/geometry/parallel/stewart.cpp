@@ -1,6 +1,7 @@
 // Forward kinematics of the general Stewart–Gough platform (GF §11.5.4): all 40 complex
 // solutions by homotopy continuation, the real ones polished in the working scalar.
 #include "soma/geometry/parallel/stewart.hpp"
+#include "soma/geometry/parallel/solve_stewart.hpp"
 #include "soma/geometry/parallel/stewart_numeric.hpp"
 
 #include "soma/algebra/errors.hpp"
@@ -251,13 +252,18 @@ TEST_CASE("Stewart planar base and platform: 40, real postures in mirror pairs",
 TEST_CASE("Stewart ceres and nlopt: real postures only, each one of the homotopy's, the defining one found",
           "[stewart][numeric]") {
   auto& g = test::rng(1158);
+  StewartOptions ceres, nlopt;
+  ceres.method = StewartMethod::Ceres;
+  nlopt.method = StewartMethod::Nlopt;
   for (int trial = 0; trial < 3; ++trial) {
     SE3<double> pose;
     const auto P = randomPlatform<double>(g, &pose);
-    const auto h = solveStewartForward<double>(P);
+    const auto h = solveStewart<double>(P);
     REQUIRE(h.complexCount() == 40);
-    for (const auto& sol : {solveStewartForwardCeres(P), solveStewartForwardNlopt(P)}) {
+    CHECK(h.certified);
+    for (const auto& sol : {solveStewart(P, ceres), solveStewart(P, nlopt)}) {
       INFO(sol.method << ", platform " << trial << ": " << sol.count() << " postures, homotopy " << h.count());
+      CHECK_FALSE(sol.certified);
       CHECK(sol.count() >= 1);
       CHECK(sol.count() <= h.count());
       CHECK(nearest(sol, pose) <= Tolerance<double>::sqrtEpsilon());
@@ -302,6 +308,77 @@ TEMPLATE_TEST_CASE("Stewart Newton polish reaches the rounding floor of the scal
   CHECK(converged);
   CHECK(stewartResidual<S>(P, h) <= Tolerance<S>::identity(64));
   CHECK((h.matrix() - pose.matrix()).norm() <= Tolerance<S>::identity(1u << 12));
+}
+
+// ---- The entry point (solve_stewart.hpp) -----------------------------------------------------------
+
+/// studies/platforms/general.json (an irregular, non-planar 6-6 platform).
+template <class S> StewartPlatform<S> generalPlatform() {
+  const double base[6][3] = {{0.854648, 0.248159, 0.002365},  {0.806715, 0.596192, -0.055343},
+                             {-0.668405, 0.732368, 0.056675}, {-0.954569, 0.316566, 0.053623},
+                             {-0.19489, -0.936848, -0.052013}, {0.304459, -1.079584, 0.063352}};
+  const double plat[6][3] = {{0.48443, 0.136726, 0.018518},   {-0.142747, 0.423322, -0.024849},
+                             {-0.24425, 0.452013, 0.030514},  {-0.241091, -0.381148, -0.042368},
+                             {-0.196986, -0.460494, -0.020788}, {0.485676, -0.026128, 0.020398}};
+  const double legs[6] = {1.042060141, 1.415693982, 1.051051562, 1.443082953, 0.974698497, 1.427782454};
+  StewartPlatform<S> P;
+  for (int i = 0; i < 6; ++i) {
+    P.base[i] = Vec3<S>(scalarCast<S>(base[i][0]), scalarCast<S>(base[i][1]), scalarCast<S>(base[i][2]));
+    P.platform[i] = Vec3<S>(scalarCast<S>(plat[i][0]), scalarCast<S>(plat[i][1]), scalarCast<S>(plat[i][2]));
+    P.legs[i] = scalarCast<S>(legs[i]);
+  }
+  return P;
+}
+
+TEMPLATE_TEST_CASE("StewartPlatform::cast: to a wider scalar and back is exact", "[stewart][cast]", long double,
+                   __float128, mpfr::mpreal) {
+  auto& g = test::rng(1836);
+  SE3<double> pose;
+  const auto P = randomPlatform<double>(g, &pose);
+  const StewartPlatform<double> back = P.template cast<TestType>().template cast<double>();
+  for (int i = 0; i < 6; ++i) {
+    CHECK(back.base[i] == P.base[i]);
+    CHECK(back.platform[i] == P.platform[i]);
+    CHECK(back.legs[i] == P.legs[i]);
+  }
+  // To float: each coordinate rounded once.
+  const StewartPlatform<float> f = P.template cast<float>();
+  for (int i = 0; i < 6; ++i) {
+    CHECK(f.legs[i] == static_cast<float>(P.legs[i]));
+    CHECK(f.base[i](2) == static_cast<float>(P.base[i](2)));
+  }
+}
+
+TEST_CASE("solveStewart: general 6-6 platform, 40 complex by homotopy; ceres and nlopt find a subset, polished in "
+          "long double", "[stewart][entry]") {
+  const auto P = generalPlatform<double>();
+  const StewartSolution<double> h = solveStewart(P);
+  CHECK(h.method == "homotopy");
+  CHECK(h.certified);
+  CHECK(h.complexCount() == 40);
+  CHECK(h.expected_count == 40);
+  CHECK(h.count() % 2 == 0);
+  for (const auto& r : h.residuals) CHECK(r <= Tolerance<double>::identity(64));
+  bool said = false;
+  for (const auto& n : h.notes) said = said || n.find("start system") != std::string::npos;
+  CHECK(said);
+  const auto Pl = P.cast<long double>();
+  for (StewartMethod m : {StewartMethod::Ceres, StewartMethod::Nlopt}) {
+    StewartOptions o;
+    o.method = m;
+    const StewartSolution<long double> s = solveStewart(Pl, o);
+    INFO(s.method << ": " << s.count() << " postures, homotopy " << h.count());
+    CHECK(s.method == stewartMethodName(m));
+    CHECK_FALSE(s.certified);
+    CHECK(s.count() >= 1);
+    CHECK(s.count() <= h.count());
+    for (std::size_t j = 0; j < s.count(); ++j) {
+      CHECK(s.residuals[j] <= Tolerance<long double>::identity(64));  // polished in long double
+      CHECK(nearest(h, s.postures[j].template cast<double>()) <= Tolerance<double>::sqrtEpsilon());
+    }
+  }
+  CHECK(parseStewartMethod("auto") == StewartMethod::Homotopy);
+  CHECK_FALSE(parseStewartMethod("newton"));
 }
 
 }  // namespace SOMA_UNITY_ID

@@ -3,11 +3,13 @@
 #include "soma/geometry/serial/example_robots.hpp"
 
 #include "soma/algebra/errors.hpp"
+#include "robots.hpp"
 #include "support/scalars.hpp"
 
 namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
 
 using namespace soma;
+using soma::test::puma560;
 using soma::test::rng;
 using soma::test::uniform;
 using soma::test::unitVec3;

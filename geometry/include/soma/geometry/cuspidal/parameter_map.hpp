@@ -33,6 +33,14 @@ struct CuspMap {
   int threads = 0;          ///< TBB's concurrency used
   double seconds = 0;       ///< wall time
   int count(int i, int j) const { return counts[std::size_t(j) * x.n + i]; }
+  /// histogram()[c]: the number of arms with c cusps, c = 0 .. the largest count.
+  std::vector<int> histogram() const {
+    int maxCount = 0;
+    for (int c : counts) maxCount = c > maxCount ? c : maxCount;
+    std::vector<int> h(std::size_t(maxCount) + 1, 0);
+    for (int c : counts) ++h[std::size_t(c)];
+    return h;
+  }
 };
 
 /// The robot of one map cell: `base` (built from DH rows) with x's and y's lengths replaced.

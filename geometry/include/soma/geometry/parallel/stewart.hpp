@@ -39,6 +39,17 @@ template <class S> struct StewartPlatform {
   std::array<Vec3<S>, 6> base;
   std::array<Vec3<S>, 6> platform;
   std::array<S, 6> legs;
+
+  /// The same platform in scalar T (each coordinate and length converted once).
+  template <class T> StewartPlatform<T> cast() const {
+    StewartPlatform<T> P;
+    for (int i = 0; i < 6; ++i) {
+      P.base[i] = castMatrix<T>(base[i]);
+      P.platform[i] = castMatrix<T>(platform[i]);
+      P.legs[i] = scalarCast<T>(legs[i]);
+    }
+    return P;
+  }
 };
 
 /// A point of CP⁷ (a0..a3, c0..c3).

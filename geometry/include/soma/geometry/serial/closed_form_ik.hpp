@@ -42,10 +42,12 @@ template <class S> struct WristAngles {
 template <class S>
 WristAngles<S> wrist3R(const Vec3<S>& v1, const Vec3<S>& v2, const Vec3<S>& v3, const Mat3<S>& R);
 
-enum class IkMethod { Auto, Wrist3R, Arm3R, Pieper, General6R };
+/// The IK methods of solveIk (ik.hpp): the closed forms here, the general-6R eigenproblem
+/// (general_6r.hpp) and the numerical general-6R methods (Ceres, NLopt in double).
+enum class IkMethod { Auto, Wrist3R, Arm3R, Pieper, General6R, Ceres, Nlopt };
 std::optional<IkMethod> parseIkMethod(std::string_view name);
 std::string_view ikMethodName(IkMethod m);
-/// "auto wrist3r arm3r pieper general6r", for messages.
+/// "auto wrist3r arm3r pieper general6r ceres nlopt", for messages.
 std::string ikMethodNames();
 
 /// Which consecutive triple of axes makes a 6R robot a Pieper robot (0-based first joint).
@@ -75,8 +77,8 @@ template <class S> Solution<S> solveArm3R(const SerialRobot<S>& robot, const SE3
 // GF §10.3.1, GF-10.3.1-pieper-algorithm (with errata E10.2, E10.3 applied); GF-5.2.1-elbow-pieper
 template <class S> Solution<S> solvePieper(const SerialRobot<S>& robot, const SE3<S>& target);
 
-/// Dispatch by method (Auto: classifyRobot). General6R is provided by general_6r.hpp; here it
-/// throws InvalidInput unless that solver is linked in (see solveIK in ik.hpp, if present).
+/// Dispatch by method among the closed forms (Auto: classifyRobot). The general-6R methods are
+/// not closed forms: InvalidInput (solveIk in ik.hpp dispatches every method).
 template <class S>
 Solution<S> solveClosedForm(const SerialRobot<S>& robot, const SE3<S>& target, IkMethod method);
 

@@ -1,4 +1,8 @@
-#include "soma/studies/pose_command.hpp"
+// `soma pose POSE.json`: one rigid motion in every representation soma has — matrix, unit
+// quaternion, dual quaternion, Study parameters, twist (log) and screw (Chasles) — with the
+// round-trip residual of each conversion, in any scalar type.
+#include "command.hpp"
+#include "scalar_options.hpp"
 
 #include "soma/algebra/dual_quaternion.hpp"
 #include "soma/algebra/screw.hpp"
@@ -8,10 +12,13 @@
 #include <chrono>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
+#include <iostream>
 
-namespace soma::studies {
+namespace soma::cli {
 
 namespace {
+
+using namespace soma::studies;
 using json = nlohmann::json;
 
 template <class D> json toJson(const Eigen::MatrixBase<D>& m) {
@@ -111,10 +118,33 @@ template <class S> int run(const std::filesystem::path& file, bool asJson, std::
   out << fmt::format("  time            {:.3g} ms\n", secs * 1e3);
   return ok ? 0 : 1;
 }
-}  // namespace
 
 int poseCommand(const std::filesystem::path& file, ScalarKind scalar, bool json, std::ostream& out) {
   return withScalar(scalar, [&]<class S>() { return run<S>(file, json, out); });
 }
 
-}  // namespace soma::studies
+class PoseCommand : public Command {
+ public:
+  void declare(Spec& spec) override {
+    spec.name = "pose";
+    spec.help = "one pose in every representation: matrix, quaternion, dual quaternion, Study "
+                "parameters, twist, screw, with round-trip residuals";
+    spec.add("file", file_, "pose JSON: {\"rotation\": [[3x3]] or \"quaternion\": "
+                            "[w,x,y,z], \"translation\": [x,y,z]}")
+        .mustBeGiven();
+    scalar_.declare(spec);
+    spec.flag("--json", json_, "print one JSON object");
+  }
+  int run(const Spec&, const Invocation&) override { return poseCommand(file_, scalar_.apply(), json_, std::cout); }
+
+ private:
+  std::string file_;
+  ScalarOptions scalar_;
+  bool json_ = false;
+};
+
+}  // namespace
+
+SOMA_CLI_COMMAND(PoseCommand, 30);
+
+}  // namespace soma::cli

@@ -1,4 +1,13 @@
-#include "soma/studies/planar_command.hpp"
+// `soma planar SCENE.json [--json] [--png FILE]`: planar kinematics on the user's own data.
+//  * {"positions": [{"x", "y", "angle"}, ...], "angles": "degrees"|"radians"} with 3–5 positions of
+//    a moving frame: poles; for 3 positions the centre of each given "circle_points" entry; for 4
+//    the centre-point and circle-point cubics; for 5 the Burmester pairs and every 4-bar made
+//    from two of them, driven through the positions (errors, one circuit or not, Grashof class).
+//  * {"fourbar": {"ground": [[x, y], [x, y]], "crank", "coupler", "rocker", "coupler_point": [u, v]},
+//     "crank_angle", "mode": ±1, "crank_rates": [ω₁, ω̇₁, ω̈₁, ω⃛₁], "angles"}: Grashof class,
+//    circuits, the pose, and the instantaneous invariants of the coupler motion (GF §5.3–5.4).
+// Runs in double. Bad input → InvalidInput (the caller prints it and exits 2).
+#include "command.hpp"
 
 #include "soma/algebra/errors.hpp"
 #include "soma/geometry/planar/burmester_synthesis.hpp"
@@ -8,10 +17,12 @@
 #include <chrono>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
+#include <iostream>
 
-namespace soma::studies {
+namespace soma::cli {
 
 namespace {
+
 using json = nlohmann::json;
 using namespace soma::planar;
 using V2 = Vec2<double>;
@@ -269,7 +280,6 @@ void fourbarScene(const io::PlanarScene& in, Output& o, const std::string& png) 
   render::renderPlotPng(plot, png, 1000, 1000);
 }
 
-}  // namespace
 
 int planarCommand(const std::filesystem::path& file, bool asJson, const std::string& png, std::ostream& out) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -292,4 +302,27 @@ int planarCommand(const std::filesystem::path& file, bool asJson, const std::str
   return 0;
 }
 
-}  // namespace soma::studies
+class PlanarCommand : public Command {
+ public:
+  void declare(Spec& spec) override {
+    spec.name = "planar";
+    spec.help = "planar kinematics of a scene: Burmester synthesis of 3-5 positions {x, y, angle}, or a "
+                "4-bar's Grashof class, circuits and GF 5.3 invariants of its coupler motion";
+    spec.add("file", file_, "scene JSON: {\"positions\": [{\"x\", \"y\", \"angle\"}, ...]} or "
+                            "{\"fourbar\": {...}, \"crank_angle\"}")
+        .mustBeGiven();
+    spec.flag("--json", json_, "print one JSON object");
+    spec.add("--png", png_, "write a figure to this PNG file");
+  }
+  int run(const Spec&, const Invocation&) override { return planarCommand(file_, json_, png_, std::cout); }
+
+ private:
+  std::string file_, png_;
+  bool json_ = false;
+};
+
+}  // namespace
+
+SOMA_CLI_COMMAND(PlanarCommand, 80);
+
+}  // namespace soma::cli

@@ -1,19 +1,24 @@
-#include "soma/studies/stewart_command.hpp"
+// `soma stewart PLATFORM.json [--method M] [--scalar T] [--json]` (DESIGN §6): every real posture
+// of a Stewart–Gough platform for its six leg lengths (forward kinematics), with the expected
+// count (40), the complex count found, each posture's residual and the time.
+#include "command.hpp"
+#include "scalar_options.hpp"
 
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/tolerance.hpp"
-#include "soma/geometry/parallel/stewart_numeric.hpp"
+#include "soma/geometry/parallel/solve_stewart.hpp"
 #include "soma/io/platform_file.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <chrono>
 #include <cmath>
+#include <iostream>
 
-namespace soma::studies {
+namespace soma::cli {
 
 namespace {
+
 
 using json = nlohmann::json;
 
@@ -23,48 +28,14 @@ json pointsJson(const auto& pts) {
   return a;
 }
 
+
 template <class S>
-int stewartImpl(const std::filesystem::path& file, const std::string& method, bool json_, std::ostream& out) {
+int stewartImpl(const std::filesystem::path& file, StewartMethod method, bool json_, std::ostream& out) {
   const StewartPlatform<S> P = io::readPlatform<S>(file);
-  // The start system (a 128-path total-degree homotopy on a random complex platform) is solved
-  // once per process; its time is reported apart from the per-platform solve.
-  StewartForwardSolution<S> sol;
-  const bool numeric = method == "ceres" || method == "nlopt";
-  if (numeric) {
-    // Ceres and NLopt run in double; in a wider scalar each posture is then polished by Newton in S.
-    StewartPlatform<double> Pd;
-    for (int i = 0; i < 6; ++i) {
-      Pd.base[i] = castMatrix<double>(P.base[i]);
-      Pd.platform[i] = castMatrix<double>(P.platform[i]);
-      Pd.legs[i] = toDouble(P.legs[i]);
-    }
-    const auto d = method == "ceres" ? solveStewartForwardCeres(Pd) : solveStewartForwardNlopt(Pd);
-    sol.method = d.method;
-    sol.seconds = d.seconds;
-    sol.paths_tracked = d.paths_tracked;
-    sol.notes = d.notes;
-    for (const auto& g : d.postures) {
-      bool converged = true;
-      const SE3<S> gs = std::is_same_v<S, double>
-                            ? g.template cast<S>()
-                            : polishStewartPosture<S>(P, g.template cast<S>(), &converged);
-      if (!converged) sol.notes.push_back("a posture did not converge in the Newton polish in " +
-                                          std::string(scalarName<S>()));
-      sol.postures.push_back(gs);
-      sol.residuals.push_back(stewartResidual<S>(P, gs));
-    }
-    sol.real_count = static_cast<int>(sol.postures.size());
-  } else {
-    // The start system (a 128-path total-degree homotopy on a random complex platform) is solved
-    // once per process; its time is reported apart from the per-platform solve.
-    const auto s0 = std::chrono::steady_clock::now();
-    (void)stewartStartSolutions<S>();
-    const double startSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count();
-    sol = solveStewartForward<S>(P);
-    sol.notes.push_back(fmt::format("start system (40 solutions of a random complex platform, 128-path total-degree "
-                                    "homotopy, once per process): {:.3g} s, not included in the time",
-                                    startSeconds));
-  }
+  StewartOptions options;
+  options.method = method;
+  const StewartSolution<S> sol = solveStewart<S>(P, options);
+  const bool numeric = method != StewartMethod::Homotopy;
   bool ok = numeric || sol.complexCount() == sol.expected_count;
   for (const auto& r : sol.residuals)
     if (!(r <= Tolerance<S>::sqrtEpsilon())) ok = false;
@@ -81,7 +52,7 @@ int stewartImpl(const std::filesystem::path& file, const std::string& method, bo
     j["seconds"] = sol.seconds;
     j["expected_count"] = sol.expected_count;
     if (!numeric) j["complex_count"] = sol.complexCount();
-    j["certified"] = !numeric;
+    j["certified"] = sol.certified;
     j["count"] = sol.count();
     j["paths_tracked"] = sol.paths_tracked;
     j["notes"] = sol.notes;
@@ -122,13 +93,40 @@ int stewartImpl(const std::filesystem::path& file, const std::string& method, bo
   return ok ? 0 : 1;
 }
 
-}  // namespace
 
 int stewartCommand(const std::filesystem::path& platform, const std::string& method, ScalarKind scalar, bool json,
                    std::ostream& out) {
-  if (method != "homotopy" && method != "auto" && method != "ceres" && method != "nlopt")
-    throw InvalidInput("--method: \"" + method + "\" is not one of auto homotopy ceres nlopt");
-  return withScalar(scalar, [&]<class S>() { return stewartImpl<S>(platform, method, json, out); });
+  const auto m = parseStewartMethod(method);
+  if (!m) throw InvalidInput("--method: \"" + method + "\" is not one of " + stewartMethodNames());
+  return withScalar(scalar, [&]<class S>() { return stewartImpl<S>(platform, *m, json, out); });
 }
 
-}  // namespace soma::studies
+
+class StewartCommand : public Command {
+ public:
+  void declare(Spec& spec) override {
+    spec.name = "stewart";
+    spec.help = "forward kinematics of a Stewart-Gough platform: all 40 complex solutions, the real postures";
+    spec.add("platform", file_, "platform JSON: {\"base\": [6 points], \"platform\": [6 points], "
+                                "\"leg_lengths\": [6]}")
+        .mustBeGiven();
+    spec.add("--method", method_, "homotopy (all 40 complex solutions, certified count), ceres or nlopt (multi-start, real postures only)")
+        .withDefault();
+    scalar_.declare(spec);
+    spec.flag("--json", json_, "print one JSON object");
+  }
+  int run(const Spec&, const Invocation&) override {
+    return stewartCommand(file_, method_, scalar_.apply(), json_, std::cout);
+  }
+
+ private:
+  std::string file_, method_ = "homotopy";
+  ScalarOptions scalar_;
+  bool json_ = false;
+};
+
+}  // namespace
+
+SOMA_CLI_COMMAND(StewartCommand, 90);
+
+}  // namespace soma::cli

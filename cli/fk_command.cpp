@@ -1,4 +1,7 @@
-#include "soma/studies/fk_command.hpp"
+// `soma fk ROBOT.json|ROBOT.urdf [--tip LINK] --joints q1,q2,... [--json]` (DESIGN §6): the tool pose T(q), and the
+// singularity measures of the configuration, in any scalar type.
+#include "command.hpp"
+#include "scalar_options.hpp"
 
 #include "soma/io/robot_file.hpp"
 #include "soma/io/urdf_file.hpp"
@@ -7,10 +10,13 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <iostream>
 
-namespace soma::studies {
+namespace soma::cli {
 
 namespace {
+
+using namespace soma::studies;
 template <class S> int fkImpl(const std::filesystem::path& file, const std::string& tip, const std::string& joints, bool json,
                               std::ostream& out) {
   const io::RobotFile<S> rf = io::readAnyRobot<S>(file, tip);
@@ -56,11 +62,36 @@ template <class S> int fkImpl(const std::filesystem::path& file, const std::stri
                      toString(sm.condition, 6), sm.rank);
   return 0;
 }
-}  // namespace
 
 int fkCommand(const std::filesystem::path& robot, const std::string& joints, ScalarKind scalar,
               bool json, std::ostream& out, const std::string& tip) {
   return withScalar(scalar, [&]<class S>() { return fkImpl<S>(robot, tip, joints, json, out); });
 }
 
-}  // namespace soma::studies
+class FkCommand : public Command {
+ public:
+  void declare(Spec& spec) override {
+    spec.name = "fk";
+    spec.help = "forward kinematics: the tool pose of a robot file at a joint vector";
+    spec.add("robot", robot_, "robot JSON (DESIGN §6: dh, mdh or poe joints) or URDF (.urdf: a serial chain)").mustBeGiven();
+    spec.add("--tip", tip_, "URDF only: the chain's tip link (default: the only leaf link)");
+    spec.add("--joints", joints_, "q1,q2,... (degrees when the robot file says \"angles\": \"degrees\"; --joints=-0.5,... for a leading minus)")
+        .mustBeGiven();
+    scalar_.declare(spec);
+    spec.flag("--json", json_, "print one JSON object");
+  }
+  int run(const Spec&, const Invocation&) override {
+    return fkCommand(robot_, joints_, scalar_.apply(), json_, std::cout, tip_);
+  }
+
+ private:
+  std::string robot_, joints_, tip_;
+  ScalarOptions scalar_;
+  bool json_ = false;
+};
+
+}  // namespace
+
+SOMA_CLI_COMMAND(FkCommand, 40);
+
+}  // namespace soma::cli

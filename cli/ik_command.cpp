@@ -1,0 +1,117 @@
+// `soma ik ROBOT.json|ROBOT.urdf [--tip LINK] --pose POSE.json [--method M] [--scalar T] [--json]` (DESIGN §6): every
+// real posture of the robot for the pose, each with its residual, the method, the expected count
+// and the time.
+#include "command.hpp"
+#include "scalar_options.hpp"
+
+#include "soma/algebra/errors.hpp"
+#include "soma/algebra/tolerance.hpp"
+#include "soma/geometry/serial/ik.hpp"
+#include "soma/io/pose_file.hpp"
+#include "soma/io/robot_file.hpp"
+#include "soma/io/urdf_file.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <iostream>
+
+namespace soma::cli {
+
+namespace {
+
+using namespace soma::studies;
+
+template <class S>
+int ikImpl(const std::filesystem::path& file, const std::string& tip, const std::filesystem::path& poseFile,
+           IkMethod method, bool json, std::ostream& out) {
+  const io::RobotFile<S> rf = io::readAnyRobot<S>(file, tip);
+  const SE3<S> target = io::readPose<S>(poseFile);
+  IkOptions options;
+  options.method = method;
+  const IkSolution<S> sol = solveIk<S>(rf.robot, target, options);
+  const double unit = rf.degrees ? 180.0 / pi<double>() : 1.0;
+  auto jointValue = [&](const JointVector<S>& q, int i) {
+    return toDouble(q(i)) * (rf.robot.joints()[i].type == JointType::Revolute ? unit : 1.0);
+  };
+  bool ok = true;
+  for (const auto& r : sol.residuals)
+    if (!(r <= Tolerance<S>::sqrtEpsilon())) ok = false;
+  if (json) {
+    nlohmann::json j;
+    j["robot"] = file.string();
+    j["name"] = rf.robot.name();
+    j["pose_file"] = poseFile.string();
+    const Mat3<S> R = target.rotation();
+    nlohmann::json rot = nlohmann::json::array();
+    for (int r = 0; r < 3; ++r) rot.push_back({toDouble(R(r, 0)), toDouble(R(r, 1)), toDouble(R(r, 2))});
+    const Vec3<S> t = target.translation();
+    j["pose"] = {{"rotation", rot}, {"translation", {toDouble(t(0)), toDouble(t(1)), toDouble(t(2))}}};
+    j["angles"] = rf.degrees ? "degrees" : "radians";
+    j["method"] = sol.method;
+    j["scalar"] = std::string(scalarName<S>());
+    j["seconds"] = sol.seconds;
+    j["expected_count"] = sol.expected_count;
+    j["count"] = sol.count();
+    j["continuum"] = sol.continuum;
+    j["notes"] = sol.notes;
+    nlohmann::json arr = nlohmann::json::array();
+    for (std::size_t k = 0; k < sol.count(); ++k) {
+      nlohmann::json jq = nlohmann::json::array();
+      for (int i = 0; i < sol.postures[k].size(); ++i) jq.push_back(jointValue(sol.postures[k], i));
+      arr.push_back({{"joints", jq}, {"residual", toDouble(sol.residuals[k])}});
+    }
+    j["solutions"] = arr;
+    out << j.dump(2) << "\n";
+    return ok ? 0 : 1;
+  }
+  out << fmt::format("robot: {} ({} joints)   method: {}   scalar: {}\n", rf.robot.name(), rf.robot.dof(),
+                     sol.method, scalarName<S>());
+  out << fmt::format("postures: {} found, {} expected in general   time: {:.3g} s{}\n", sol.count(),
+                     sol.expected_count, sol.seconds, sol.continuum ? "   (a continuum: representatives)" : "");
+  for (std::size_t k = 0; k < sol.count(); ++k) {
+    std::string line = fmt::format("  {:>2}:", k + 1);
+    for (int i = 0; i < sol.postures[k].size(); ++i) line += fmt::format(" {:>12.7f}", jointValue(sol.postures[k], i));
+    line += fmt::format("   residual {}", toString(sol.residuals[k], 3));
+    out << line << "\n";
+  }
+  if (rf.degrees) out << "  (joint angles in degrees)\n";
+  for (const auto& n : sol.notes) out << "note: " << n << "\n";
+  return ok ? 0 : 1;
+}
+
+int ikCommand(const std::filesystem::path& robot, const std::filesystem::path& pose,
+              const std::string& method, ScalarKind scalar, bool json, std::ostream& out,
+              const std::string& tip) {
+  const auto m = parseIkMethod(method);
+  if (!m) throw InvalidInput("--method: \"" + method + "\" is not one of " + ikMethodNames());
+  return withScalar(scalar, [&]<class S>() { return ikImpl<S>(robot, tip, pose, *m, json, out); });
+}
+
+class IkCommand : public Command {
+ public:
+  void declare(Spec& spec) override {
+    spec.name = "ik";
+    spec.help = "inverse kinematics: every real posture of a robot for a pose";
+    spec.add("robot", robot_, "robot JSON (DESIGN §6) or URDF (.urdf: a serial chain)").mustBeGiven();
+    spec.add("--tip", tip_, "URDF only: the chain's tip link (default: the only leaf link)");
+    spec.add("--pose", pose_, "pose JSON: {\"rotation\": [[3x3]], \"translation\": [x,y,z]}").mustBeGiven();
+    spec.add("--method", method_, "auto wrist3r arm3r pieper general6r (every scalar); ceres nlopt (double, Newton-polished in other scalars)")
+        .withDefault();
+    scalar_.declare(spec);
+    spec.flag("--json", json_, "print one JSON object");
+  }
+  int run(const Spec&, const Invocation&) override {
+    return ikCommand(robot_, pose_, method_, scalar_.apply(), json_, std::cout, tip_);
+  }
+
+ private:
+  std::string robot_, pose_, method_ = "auto", tip_;
+  ScalarOptions scalar_;
+  bool json_ = false;
+};
+
+}  // namespace
+
+SOMA_CLI_COMMAND(IkCommand, 50);
+
+}  // namespace soma::cli

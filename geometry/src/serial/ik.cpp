@@ -1,0 +1,181 @@
+// solveIk for the five scalars (ik.hpp): the closed forms, the general-6R eigenproblem with its
+// numerical completion, and the numerical methods in double polished in the working scalar.
+#include "soma/geometry/serial/ik.hpp"
+
+#include "soma/algebra/errors.hpp"
+#include "soma/algebra/tolerance.hpp"
+#include "soma/geometry/numeric_polish.hpp"
+#include "soma/geometry/serial/general_6r.hpp"
+#include "soma/geometry/serial/standard_dh.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+
+namespace soma {
+
+namespace {
+
+template <class S> Robot6R<double> toDouble6R(const Robot6R<S>& rows) {
+  Robot6R<double> rd;
+  for (int i = 0; i < 6; ++i) rd[i] = rows[i].template cast<double>();
+  return rd;
+}
+
+/// A posture of the general-6R methods in double carried to S: Newton steps on the pose
+/// equations in S, the joint values wrapped by `robot`, with its residual.
+template <class S> struct Lifted6R {
+  JointVector<S> q;
+  S residual;
+};
+template <class S>
+Lifted6R<S> lift6R(const Robot6R<S>& rows, const SE3<S>& flange, const SerialRobot<S>& robot, const JointVector<double>& qd) {
+  std::array<S, 6> q;
+  for (int i = 0; i < 6; ++i) q[i] = scalarCast<S>(qd(i));
+  q = polishGeneral6R<S>(rows, flange, q, General6ROptions{}.polish_iterations);
+  JointVector<S> v(6);
+  for (int i = 0; i < 6; ++i) v(i) = q[i];
+  return {robot.wrap(v), general6rResidual<S>(rows, flange, q)};
+}
+
+/// True when the eigenproblem's answer may be short: not 16 complex solutions, an odd real
+/// count, or the solver says so (e.g. a leading matrix singular at every θ3 offset, as for robots
+/// just outside the Pieper class). GF §11.5 (16 complex postures)
+template <class S> bool mayBeShort(const General6RSolution<S>& g) {
+  bool shortAnswer = g.complex_count != 16 || g.count() % 2 == 1;
+  for (const auto& n : g.notes)
+    if (n.find("may be short") != std::string::npos) shortAnswer = true;
+  return shortAnswer;
+}
+
+/// The change of strategy when the algebraic answer may be short: a Ceres multi-start search in
+/// double, each posture Newton-polished in S and added when it is new. The count is then not
+/// certified, and the notes say so. GF §11.5 (16 complex postures)
+template <class S>
+void completeNumerically(const Robot6R<S>& rows, const SE3<S>& flange, const SerialRobot<S>& robot, int starts,
+                         General6RSolution<S>& g) {
+  using std::abs;
+  using std::atan2;
+  using std::cos;
+  using std::sin;
+  General6RNumericOptions opt;
+  opt.starts = starts;
+  const Robot6R<double> rd = toDouble6R(rows);
+  const SE3<double> fd = flange.template cast<double>();
+  const auto lifted = searchInDoublePolishInS(
+      [&] { return solveGeneral6RCeres(rd, fd, opt); },
+      [&](const JointVector<double>& qd) -> std::optional<Lifted6R<S>> {
+        Lifted6R<S> l = lift6R(rows, flange, robot, qd);
+        if (!(l.residual <= Tolerance<S>::sqrtEpsilon())) return std::nullopt;
+        return l;
+      });
+  int added = 0;
+  for (const auto& l : lifted.polished) {
+    bool known = false;
+    for (const auto& p : g.postures) {
+      S gap(0);
+      for (int i = 0; i < 6; ++i) {
+        const S d = l.q(i) - p(i);
+        gap = std::max<S>(gap, abs(atan2(sin(d), cos(d))));
+      }
+      if (gap <= Tolerance<S>::input()) known = true;
+    }
+    if (known) continue;
+    g.postures.push_back(l.q);
+    g.residuals.push_back(l.residual);
+    ++added;
+  }
+  g.seconds += lifted.seconds;
+  g.notes.push_back("the eigenproblem answer may be short (" + std::to_string(g.complex_count) +
+                    " complex solutions): numerical completion by Ceres (" + std::to_string(starts) +
+                    " starts in double, Newton in " + std::string(scalarName<S>()) + ") added " +
+                    std::to_string(added) + " posture(s); this count is not certified complete");
+}
+
+template <class S> IkSolution<S> general6R(const SerialRobot<S>& robotIn, const SE3<S>& target, const IkOptions& opt) {
+  const IkMethod method = opt.method;
+  const std::string name(ikMethodName(method));
+  if (robotIn.dof() != 6 || !robotIn.allRevolute())
+    throw InvalidInput("ik method " + name + ": needs a robot with 6 revolute joints");
+  // The general 6R solver (general_6r.hpp) takes six standard DH rows and the pose of frame 6 in
+  // frame 0: a POE (URDF) or modified-DH robot is rewritten in standard DH first, then the base
+  // and tool are stripped.
+  const SerialRobot<S> robot = robotIn.convention() == DHConvention::Standard ? robotIn : toStandardDH(robotIn);
+  Robot6R<S> rows;
+  for (int i = 0; i < 6; ++i) rows[i] = robot.dhRows()[i];
+  const SE3<S> flange = robot.base().inverse() * target * robot.tool().inverse();
+  General6RSolution<S> g;
+  bool certified = false;
+  if (method == IkMethod::General6R) {
+    g = solveGeneral6R<S>(rows, flange);
+    g.notes.push_back("complex solutions of the eigenproblem: " + std::to_string(g.complex_count) +
+                      ", solved in " + g.solved_in);
+    certified = !mayBeShort(g);
+    if (!certified && opt.complete) completeNumerically<S>(rows, flange, robot, opt.completionStarts, g);
+  } else {
+    const Robot6R<double> rd = toDouble6R(rows);
+    const SE3<double> fd = flange.template cast<double>();
+    const auto lifted = searchInDoublePolishInS(
+        [&] { return method == IkMethod::Ceres ? solveGeneral6RCeres(rd, fd) : solveGeneral6RNlopt(rd, fd); },
+        [&](const JointVector<double>& qd) -> std::optional<Lifted6R<S>> {
+          // Ceres and NLopt polish in double themselves: in double the posture is kept as found.
+          if constexpr (std::is_same_v<S, double>) return std::nullopt;
+          else return lift6R(rows, flange, robot, qd);
+        });
+    const General6RSolution<double>& gd = lifted.found;
+    g.method = gd.method;
+    g.expected_count = gd.expected_count;
+    g.notes = gd.notes;
+    g.continuum = gd.continuum;
+    if constexpr (std::is_same_v<S, double>) {
+      g.postures = gd.postures;
+      g.residuals = gd.residuals;
+    } else {
+      for (const auto& l : lifted.polished) {
+        g.postures.push_back(l.q);
+        g.residuals.push_back(l.residual);
+      }
+      g.notes.push_back(polishedInNote<S>(name));
+    }
+    g.seconds = lifted.seconds;
+  }
+  // The robot's joint limits apply as for the closed forms (which drop such postures themselves).
+  IkSolution<S> kept;
+  static_cast<Solution<S>&>(kept) = static_cast<const Solution<S>&>(g);
+  kept.postures.clear();
+  kept.residuals.clear();
+  for (std::size_t k = 0; k < g.count(); ++k)
+    if (robot.withinLimits(g.postures[k])) {
+      kept.postures.push_back(g.postures[k]);
+      kept.residuals.push_back(g.residuals[k]);
+    }
+  if (kept.count() < g.count())
+    kept.notes.push_back(std::to_string(g.count() - kept.count()) + " posture(s) outside the joint limits dropped");
+  kept.certified = certified;
+  if (method == IkMethod::General6R) {
+    kept.complex_count = g.complex_count;
+    kept.solved_in = g.solved_in;
+  }
+  return kept;
+}
+
+}  // namespace
+
+template <class S> IkSolution<S> solveIk(const SerialRobot<S>& robot, const SE3<S>& pose, const IkOptions& options) {
+  IkOptions opt = options;
+  if (opt.method == IkMethod::Auto) opt.method = classifyRobot(robot);
+  if (opt.method == IkMethod::General6R || opt.method == IkMethod::Ceres || opt.method == IkMethod::Nlopt)
+    return general6R<S>(robot, pose, opt);
+  IkSolution<S> sol;
+  static_cast<Solution<S>&>(sol) = solveClosedForm<S>(robot, pose, opt.method);
+  sol.certified = true;
+  return sol;
+}
+
+#define SOMA_SOLVE_IK_INSTANTIATE(S) \
+  template IkSolution<S> solveIk<S>(const SerialRobot<S>&, const SE3<S>&, const IkOptions&);
+SOMA_FOR_EACH_SCALAR(SOMA_SOLVE_IK_INSTANTIATE)
+#undef SOMA_SOLVE_IK_INSTANTIATE
+
+}  // namespace soma

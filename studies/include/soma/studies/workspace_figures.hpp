@@ -1,0 +1,20 @@
+#pragma once
+// Figures of the workspace analysis (analyseWorkspace, soma/geometry/cuspidal/workspace_analysis.hpp):
+// reachability and dexterity maps with the singular boundary, σmin along a plan.
+#include "soma/geometry/cuspidal/workspace_analysis.hpp"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace soma::studies {
+
+void plotReachability(const WorkspaceMaps& m, const std::vector<std::vector<Eigen::Vector2d>>& boundary,
+                      const std::string& title, const std::filesystem::path& png);
+void plotDexterity(const WorkspaceMaps& m, const std::vector<std::vector<Eigen::Vector2d>>& boundary,
+                   const std::vector<Eigen::Vector2d>& pathTrace, const std::string& title,
+                   const std::filesystem::path& png);
+void plotPathSigma(const SerialRobot<double>& robot, const SafePath& p, const std::string& title,
+                   const std::filesystem::path& png);
+
+}  // namespace soma::studies
