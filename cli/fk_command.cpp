@@ -16,7 +16,6 @@ namespace soma::cli {
 
 namespace {
 
-using namespace soma::studies;
 template <class S> int fkImpl(const std::filesystem::path& file, const std::string& tip, const std::string& joints, bool json,
                               std::ostream& out) {
   const io::RobotFile<S> rf = io::readAnyRobot<S>(file, tip);

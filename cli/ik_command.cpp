@@ -19,7 +19,6 @@ namespace soma::cli {
 
 namespace {
 
-using namespace soma::studies;
 
 template <class S>
 int ikImpl(const std::filesystem::path& file, const std::string& tip, const std::filesystem::path& poseFile,

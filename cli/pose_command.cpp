@@ -18,7 +18,6 @@ namespace soma::cli {
 
 namespace {
 
-using namespace soma::studies;
 using json = nlohmann::json;
 
 template <class D> json toJson(const Eigen::MatrixBase<D>& m) {

@@ -93,6 +93,7 @@
 #include <soma/geometry/screws/screw_system.hpp>
 #include <soma/geometry/serial/closed_form_ik.hpp>
 #include <soma/geometry/serial/dh.hpp>
+#include <soma/geometry/serial/example_robots.hpp>
 #include <soma/geometry/serial/general_6r.hpp>
 #include <soma/geometry/serial/ik.hpp>
 #include <soma/geometry/serial/ik_solution.hpp>
@@ -108,6 +109,16 @@
 #include <soma/geometry/study/oriented_flag.hpp>
 #include <soma/geometry/study/quaternion_matrices.hpp>
 #include <soma/geometry/study/study_plane.hpp>
+
+// io
+#include <soma/io/json_file.hpp>
+#include <soma/io/link_inertia_file.hpp>
+#include <soma/io/number.hpp>
+#include <soma/io/planar_scene_file.hpp>
+#include <soma/io/platform_file.hpp>
+#include <soma/io/pose_file.hpp>
+#include <soma/io/robot_file.hpp>
+#include <soma/io/urdf_file.hpp>
 
 // render
 #include <soma/render/camera.hpp>

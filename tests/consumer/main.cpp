@@ -1,5 +1,6 @@
-// A soma user's program: every posture of a PUMA 560 for one pose, by the closed-form Pieper
-// solver (GF §10.3.1), each checked by forward kinematics.
+// A soma user's program: every posture of a PUMA 560 for one pose through the library's front door
+// soma::solveIk (method auto: the closed-form Pieper solver, GF §10.3.1), each checked by forward
+// kinematics.
 #include <soma/soma.hpp>
 
 #include <cstdio>
@@ -20,7 +21,7 @@ int main() {
   JointVector<S> q0(6);
   q0 << 0.3, -0.7, 0.4, 1.1, -0.6, 0.9;
   const SE3<S> target = robot.fk(q0);
-  const Solution<S> sol = solveClosedForm(robot, target, IkMethod::Auto);
+  const IkSolution<S> sol = solveIk(robot, target, IkOptions{});
 
   const S tol = Tolerance<S>::input();
   int bad = 0;
@@ -29,8 +30,8 @@ int main() {
     if (poseResidual(robot.fk(q), target, robot.lengthScale()) > tol) ++bad;
     if ((robot.wrap(q) - robot.wrap(q0)).cwiseAbs().maxCoeff() <= tol) foundQ0 = true;
   }
-  std::printf("%s, method %s: %zu postures (%d expected), %d with FK off the pose, q0 %s\n",
+  std::printf("%s, method %s: %zu postures (%d expected), %d with FK off the pose, q0 %s, %s\n",
               robot.name().c_str(), sol.method.c_str(), sol.count(), sol.expected_count, bad,
-              foundQ0 ? "found" : "missing");
-  return sol.count() == 8 && bad == 0 && foundQ0 ? 0 : 1;
+              foundQ0 ? "found" : "missing", sol.certified ? "certified" : "not certified");
+  return sol.count() == 8 && bad == 0 && foundQ0 && sol.certified ? 0 : 1;
 }

@@ -4,6 +4,7 @@
 #include "soma/io/platform_file.hpp"
 #include "soma/io/robot_file.hpp"
 
+#include "support/repo_file.hpp"
 #include "support/scalars.hpp"
 
 #include <filesystem>

@@ -3,6 +3,7 @@
 // fold in, a tip picks one chain of a tree, and every defect is an InvalidInput naming it.
 #include "soma/io/urdf_file.hpp"
 
+#include "support/repo_file.hpp"
 #include "support/scalars.hpp"
 
 #include <filesystem>
