@@ -74,9 +74,8 @@ render::PlotAxis angleAxis(const std::string& label) {
   return a;
 }
 
-}  // namespace
-
-void plotJointSpace(const CuspidalAnalysis& r, const std::string& title, const std::filesystem::path& png) {
+/// The (θ2, θ3) plane: the aspect cells and the singular curves det J = 0 in `colour`.
+render::Plot aspectPlot(const CuspidalAnalysis& r, const std::string& title, render::Color colour, double width) {
   render::Plot plot;
   plot.title = title;
   plot.x = angleAxis("θ2 (rad)");
@@ -87,9 +86,16 @@ void plotJointSpace(const CuspidalAnalysis& r, const std::string& title, const s
   addAspectCells(plot, r);
   bool first = true;
   for (const auto& b : r.branches) {
-    addJointCurve(plot, b.joints, render::palette::black, first ? "det J = 0" : "", 3);
+    addJointCurve(plot, b.joints, colour, first ? "det J = 0" : "", width);
     first = false;
   }
+  return plot;
+}
+
+}  // namespace
+
+void plotJointSpace(const CuspidalAnalysis& r, const std::string& title, const std::filesystem::path& png) {
+  render::Plot plot = aspectPlot(r, title, render::palette::black, 3);
   if (!r.cusps.cusps.empty()) {
     std::vector<double> xs, ys;
     for (const auto& c : r.cusps.cusps) {
@@ -171,19 +177,7 @@ void plotSection(const CuspidalAnalysis& r, const std::string& title, const std:
 }
 
 void plotWitness(const CuspidalAnalysis& r, const std::string& title, const std::filesystem::path& png) {
-  render::Plot plot;
-  plot.title = title;
-  plot.x = angleAxis("θ2 (rad)");
-  plot.y = angleAxis("θ3 (rad)");
-  plot.equalAspect = true;
-  plot.grid = false;
-  plot.legend = render::LegendCorner::BottomLeft;
-  addAspectCells(plot, r);
-  bool first = true;
-  for (const auto& b : r.branches) {
-    addJointCurve(plot, b.joints, render::palette::darkGrey, first ? "det J = 0" : "", 2);
-    first = false;
-  }
+  render::Plot plot = aspectPlot(r, title, render::palette::darkGrey, 2);
   const WitnessPath& w = r.witness;
   if (w.found) {
     std::vector<Eigen::Vector2d> pts;

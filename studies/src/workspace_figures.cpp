@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace soma::studies {
 
@@ -34,28 +35,36 @@ render::PlotCells cellsOf(const WorkspaceMaps& m) {
   return c;
 }
 
-}  // namespace
-
-void plotReachability(const WorkspaceMaps& m, const std::vector<std::vector<Eigen::Vector2d>>& boundary,
-                      const std::string& title, const std::filesystem::path& png) {
+/// The (ρ, z) half-plane of a workspace section: the map's cells, the singular boundary, the legend
+/// where the outer arc leaves room.
+render::Plot sectionPlot(const std::string& title, const WorkspaceMaps& m, render::PlotCells cells,
+                         const std::vector<std::vector<Eigen::Vector2d>>& boundary) {
   render::Plot plot;
   plot.title = title;
   plot.x.label = "ρ = distance from axis 1";
   plot.y.label = "z along axis 1";
   plot.equalAspect = true;
   plot.legend = render::LegendCorner::BottomRight;  // the section's outer arc leaves that corner free
+  plot.cells.push_back(std::move(cells));
+  plot.x.min = 0;
+  plot.x.max = 1.3 * m.rhoMax;  // room for the legend right of the outer arc
+  plot.y.min = m.zMin;
+  plot.y.max = m.zMax;
+  addBoundary(plot, boundary);
+  return plot;
+}
+
+}  // namespace
+
+void plotReachability(const WorkspaceMaps& m, const std::vector<std::vector<Eigen::Vector2d>>& boundary,
+                      const std::string& title, const std::filesystem::path& png) {
   render::PlotCells c = cellsOf(m);
   int maxHits = 1;
   for (int h : m.hits) maxHits = std::max(maxHits, h);
   for (int h : m.hits)
     c.cells.push_back(h == 0 ? render::palette::white
                              : render::colorMap(std::log1p(double(h)) / std::log1p(double(maxHits))));
-  plot.cells.push_back(c);
-  plot.x.min = 0;
-  plot.x.max = 1.3 * m.rhoMax;  // room for the legend right of the outer arc
-  plot.y.min = m.zMin;
-  plot.y.max = m.zMax;
-  addBoundary(plot, boundary);
+  render::Plot plot = sectionPlot(title, m, std::move(c), boundary);
   plot.legendSwatches.emplace_back("1 sample", render::colorMap(0.0));
   plot.legendSwatches.emplace_back(fmt::format("{} (log scale)", maxHits), render::colorMap(1.0));
   render::renderPlotPng(plot, png, 1000, 1000);
@@ -64,20 +73,9 @@ void plotReachability(const WorkspaceMaps& m, const std::vector<std::vector<Eige
 void plotDexterity(const WorkspaceMaps& m, const std::vector<std::vector<Eigen::Vector2d>>& boundary,
                    const std::vector<Eigen::Vector2d>& pathTrace, const std::string& title,
                    const std::filesystem::path& png) {
-  render::Plot plot;
-  plot.title = title;
-  plot.x.label = "ρ = distance from axis 1";
-  plot.y.label = "z along axis 1";
-  plot.equalAspect = true;
-  plot.legend = render::LegendCorner::BottomRight;  // the section's outer arc leaves that corner free
   render::PlotCells c = cellsOf(m);
   for (double d : m.dexterity) c.cells.push_back(d < 0 ? render::palette::white : render::colorMap(std::clamp(d, 0.0, 1.0)));
-  plot.cells.push_back(c);
-  plot.x.min = 0;
-  plot.x.max = 1.3 * m.rhoMax;  // room for the legend right of the outer arc
-  plot.y.min = m.zMin;
-  plot.y.max = m.zMax;
-  addBoundary(plot, boundary);
+  render::Plot plot = sectionPlot(title, m, std::move(c), boundary);
   if (!pathTrace.empty()) {
     std::vector<double> xs, ys;
     for (const auto& p : pathTrace) xs.push_back(p(0)), ys.push_back(p(1));

@@ -1,3 +1,5 @@
+#pragma once
+// Definitions of pose_file.hpp's templates, instantiated for the five scalars by soma_instantiate (io/CMakeLists.txt).
 #include "soma/io/pose_file.hpp"
 
 #include "soma/algebra/errors.hpp"
@@ -80,11 +82,9 @@ template <class S> SE3<S> readPose(const std::filesystem::path& file) {
   return parsePose<S>(readTextFile(file, "pose"), file.string());
 }
 
-#define SOMA_POSE_INSTANTIATE(S)                                              \
+#define SOMA_INSTANTIATE_POSE_FILE(S) namespace io {                                              \
   template SE3<S> parsePose<S>(const std::string&, const std::string&);       \
   template SE3<S> readPose<S>(const std::filesystem::path&);                  \
-  template SE3<S> poseFromJson<S>(const json&, const std::string&);
-SOMA_FOR_EACH_SCALAR(SOMA_POSE_INSTANTIATE)
-#undef SOMA_POSE_INSTANTIATE
+  template SE3<S> poseFromJson<S>(const json&, const std::string&); }
 
 }  // namespace soma::io

@@ -1,5 +1,7 @@
-// solveIk for the five scalars (ik.hpp): the closed forms, the general-6R eigenproblem with its
-// numerical completion, and the numerical methods in double polished in the working scalar.
+#pragma once
+// Definitions of solveIk (ik.hpp): the closed forms, the general-6R eigenproblem with its numerical
+// completion, and the numerical methods in double polished in the working scalar. Instantiated for
+// the five scalars by soma_instantiate (geometry/CMakeLists.txt).
 #include "soma/geometry/serial/ik.hpp"
 
 #include "soma/algebra/errors.hpp"
@@ -173,9 +175,7 @@ template <class S> IkSolution<S> solveIk(const SerialRobot<S>& robot, const SE3<
   return sol;
 }
 
-#define SOMA_SOLVE_IK_INSTANTIATE(S) \
+#define SOMA_INSTANTIATE_IK(S) \
   template IkSolution<S> solveIk<S>(const SerialRobot<S>&, const SE3<S>&, const IkOptions&);
-SOMA_FOR_EACH_SCALAR(SOMA_SOLVE_IK_INSTANTIATE)
-#undef SOMA_SOLVE_IK_INSTANTIATE
 
 }  // namespace soma

@@ -1,3 +1,5 @@
+#pragma once
+// Definitions of robot_file.hpp's templates, instantiated for the five scalars by soma_instantiate (io/CMakeLists.txt).
 #include "soma/io/robot_file.hpp"
 
 #include "soma/algebra/errors.hpp"
@@ -143,11 +145,9 @@ template <class S> JointVector<S> parseJoints(const std::string& text, const Rob
   return q;
 }
 
-#define SOMA_ROBOT_FILE_INSTANTIATE(S)                                                 \
+#define SOMA_INSTANTIATE_ROBOT_FILE(S) namespace io {                                                 \
   template RobotFile<S> parseRobot<S>(const std::string&, const std::string&);         \
   template RobotFile<S> readRobot<S>(const std::filesystem::path&);                    \
-  template JointVector<S> parseJoints<S>(const std::string&, const RobotFile<S>&);
-SOMA_FOR_EACH_SCALAR(SOMA_ROBOT_FILE_INSTANTIATE)
-#undef SOMA_ROBOT_FILE_INSTANTIATE
+  template JointVector<S> parseJoints<S>(const std::string&, const RobotFile<S>&); }
 
 }  // namespace soma::io

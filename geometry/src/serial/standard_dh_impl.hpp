@@ -1,4 +1,5 @@
-// toStandardDH for the five scalars (standard_dh.hpp).
+#pragma once
+// Definitions of toStandardDH (standard_dh.hpp), instantiated for the five scalars by soma_instantiate.
 #include "soma/geometry/serial/standard_dh.hpp"
 
 #include "soma/algebra/errors.hpp"
@@ -75,8 +76,6 @@ template <class S> SerialRobot<S> toStandardDH(const SerialRobot<S>& robot) {
   return dh;
 }
 
-#define SOMA_STANDARD_DH_INSTANTIATE(S) template SerialRobot<S> toStandardDH<S>(const SerialRobot<S>&);
-SOMA_FOR_EACH_SCALAR(SOMA_STANDARD_DH_INSTANTIATE)
-#undef SOMA_STANDARD_DH_INSTANTIATE
+#define SOMA_INSTANTIATE_STANDARD_DH(S) template SerialRobot<S> toStandardDH<S>(const SerialRobot<S>&);
 
 }  // namespace soma

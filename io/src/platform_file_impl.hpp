@@ -1,3 +1,5 @@
+#pragma once
+// Definitions of platform_file.hpp's templates, instantiated for the five scalars by soma_instantiate (io/CMakeLists.txt).
 #include "soma/io/platform_file.hpp"
 
 #include "soma/algebra/errors.hpp"
@@ -53,10 +55,8 @@ template <class S> StewartPlatform<S> readPlatform(const std::filesystem::path& 
   return parsePlatform<S>(readTextFile(file, "platform"), file.string());
 }
 
-#define SOMA_PLATFORM_FILE_INSTANTIATE(S)                                                \
+#define SOMA_INSTANTIATE_PLATFORM_FILE(S) namespace io {                                                \
   template StewartPlatform<S> parsePlatform<S>(const std::string&, const std::string&); \
-  template StewartPlatform<S> readPlatform<S>(const std::filesystem::path&);
-SOMA_FOR_EACH_SCALAR(SOMA_PLATFORM_FILE_INSTANTIATE)
-#undef SOMA_PLATFORM_FILE_INSTANTIATE
+  template StewartPlatform<S> readPlatform<S>(const std::filesystem::path&); }
 
 }  // namespace soma::io
