@@ -3,6 +3,7 @@
 // Double precision; the geometry is instantiated and tested for all five scalars in tests/geometry/study.
 #include "soma/geometry/study/constraint_quadrics.hpp"
 #include "soma/geometry/study/intersection_ring.hpp"
+#include "soma/geometry/study/quaternion_matrices.hpp"
 #include "soma/geometry/study/study_plane.hpp"
 #include "soma/studies/study.hpp"
 
@@ -328,6 +329,28 @@ void ringCounts(Context& c) {
   c.checkEqual("cells of Q⁶ (even real dimensions 0…12) = χ(Q⁶) = 2m + 2 with m = 3", 8, C::kCells);
 }
 
+/// The book's extra quadric of the S–S link, second joint at distance l on the z-axis:
+/// (c₀ − l a₃)c₀ + (c₁ + l a₂)c₁ + (c₂ − l a₁)c₂ + (c₃ + l a₀)c₃.
+// GF §11.5.3 line 7242 as printed (correct)
+S sphericalSphericalFormAsPrinted(const Vec8<S>& x, S l) {
+  const S a0 = x(0), a1 = x(1), a2 = x(2), a3 = x(3), c0 = x(4), c1 = x(5), c2 = x(6), c3 = x(7);
+  return (c0 - l * a3) * c0 + (c1 + l * a2) * c1 + (c2 - l * a1) * c2 + (c3 + l * a0) * c3;
+}
+
+/// The book's homogenised leg equation evaluated literally with quaternions h₀ = a, h₁ = c:
+/// (|p|² + |q|² − L²) h₀h₀* + h₀ q h₀* p + p h₀ q h₀* + 2 h₀ q h₁* − 2 h₁ q h₀* + 2 p h₁ h₀* − 2 h₀ h₁* p + 4 h₁ h₁*.
+// GF §11.5.4 lines 7263–7278 as printed (correct)
+Vec4<S> stewartLegExpressionAsPrinted(const Vec8<S>& x, const Vec3<S>& p, const Vec3<S>& q, S L) {
+  const Vec4<S> h0 = x.head<4>(), h1 = x.tail<4>();
+  const Vec4<S> qq(0, q.x(), q.y(), q.z()), pp(0, p.x(), p.y(), p.z());
+  auto mul = [](const Vec4<S>& u, const Vec4<S>& v) { return Vec4<S>(quaternionLeftMatrix<S>(u) * v); };
+  auto conj = [](const Vec4<S>& u) { return Vec4<S>(u(0), -u(1), -u(2), -u(3)); };
+  const Vec4<S> h0s = conj(h0), h1s = conj(h1);
+  const S k = p.squaredNorm() + q.squaredNorm() - L * L;
+  return k * mul(h0, h0s) + mul(mul(mul(h0, qq), h0s), pp) + mul(pp, mul(mul(h0, qq), h0s)) + 2 * mul(mul(h0, qq), h1s) -
+         2 * mul(mul(h1, qq), h0s) + 2 * mul(mul(pp, h1), h0s) - 2 * mul(mul(h0, h1s), pp) + 4 * mul(h1, h1s);
+}
+
 void ssLinkVariety(Context& c) {
   auto g = rng(1111);
   double worst = 0, worstQ = 0, worstOff = 1e300;
@@ -335,10 +358,10 @@ void ssLinkVariety(Context& c) {
     const double l = uni(g, 0.2, 3);
     const SE3<S> m = rotationAbout(unit3(g), uni(g, -3, 3), Vec3<S>::Zero().eval()) * rotationAbout(unit3(g), uni(g, -3, 3), Vec3<S>(0, 0, l));
     const Vec8<S> x = study(m);
-    worst = std::max(worst, std::abs(sphericalSphericalFormAsPrinted<S>(x, l)) / (1 + l * l));
+    worst = std::max(worst, std::abs(sphericalSphericalFormAsPrinted(x, l)) / (1 + l * l));
     worstQ = std::max(worstQ, std::abs(quadricResidual<S>(sphereConstraintQuadric<S>(Vec3<S>::Zero(), Vec3<S>(0, 0, l), l), x)));
     const Vec8<S> y = study(SE3<S>(m.so3(), Vec3<S>(m.translation() + Vec3<S>(0.5, 0, 0))));
-    worstOff = std::min(worstOff, std::abs(sphericalSphericalFormAsPrinted<S>(y, l)));
+    worstOff = std::min(worstOff, std::abs(sphericalSphericalFormAsPrinted(y, l)));
   }
   c.checkResidual("book's S–S quadric (c₀ − l a₃)c₀ + (c₁ + l a₂)c₁ + (c₂ − l a₁)c₂ + (c₃ + l a₀)c₃ on 30 S–S postures", worst,
                   tol(512));
@@ -370,7 +393,7 @@ void stewartLegQuadric(Context& c) {
     const double L = (m.act(q) - p).norm();
     const Vec8<S> x = study(m) * uni(g, 0.5, 3);
     worst = std::max(worst, std::abs(quadricResidual<S>(sphereConstraintQuadric<S>(p, q, L), x)) / (1 + L * L));
-    const Vec4<S> book = stewartLegExpressionAsPrinted<S>(x, p, q, L);
+    const Vec4<S> book = stewartLegExpressionAsPrinted(x, p, q, L);
     worstBook = std::max(worstBook, std::abs(book(0)) / x.squaredNorm() / (1 + L * L));
     worstVec = std::max(worstVec, book.tail<3>().cwiseAbs().maxCoeff() / x.squaredNorm() / (1 + L * L));
   }

@@ -371,6 +371,11 @@ void coneDuality(Context& c) {
                yesNo(formClosure<double>(E).closed) + " " + yesNo(positiveSpan<double>(E).spans));
 }
 
+/// The dual friction cone as printed: the screws (0, 0, 0, λl cos φ, λl sin φ, l), l ≥ 0, 0 ≤ λ ≤ 1/μ,
+/// i.e. ω = 0 and v_z ≥ μ|v_t|.
+// GF §12.6 lines 7605–7607 as printed (erratum E12.2)
+bool inDualFrictionConeAsPrinted(const T& s, double mu) { return s.ang().squaredNorm() == 0 && inDualFrictionCone<double>(s, mu); }
+
 void dualFrictionCone(Context& c) {
   auto g = std::mt19937_64(1264);
   const double mu = 0.6;
@@ -379,7 +384,7 @@ void dualFrictionCone(Context& c) {
     const T s(V3(uni(g), uni(g), uni(g)), V3(uni(g), uni(g), uni(g)));
     // exact dual test: min over the cone boundary of the pairing (closed form: F(v_z − μ|v_t|) at F = 1)
     const double exact = s.lin().z() - mu * s.lin().head<2>().norm();
-    const bool corr = inDualFrictionCone<double>(s, mu), printed = inDualFrictionConeAsPrinted<double>(s, mu);
+    const bool corr = inDualFrictionCone<double>(s, mu), printed = inDualFrictionConeAsPrinted(s, mu);
     agree += corr == (exact >= 0);
     missed += (exact >= 0) && !printed;
     ++n;

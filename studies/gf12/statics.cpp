@@ -132,6 +132,14 @@ void pitchAxis(Context& c) {
 }
 
 // ---- §12.3 --------------------------------------------------------------------------------------
+/// The resolved force matrix with row 2 = (0, −l, 0, 0, 0, −l, 0, 0).
+// GF §12.3 line 7410 as printed (erratum E12.1)
+Mat68<double> resolvedForceMatrixAsPrinted(double l) {
+  Mat68<double> a = resolvedForceMatrix<double>(l);
+  a(1, 5) = -l;
+  return a;
+}
+
 void wristSensor(Context& c) {
   auto g = std::mt19937_64(1231);
   const double l = 0.035;  // 35 mm beams
@@ -146,7 +154,7 @@ void wristSensor(Context& c) {
         w(1) + w(3) + w(5) + w(7);
     book = std::max(book, (bk - tot.coeffs()).cwiseAbs().maxCoeff());
     corr = std::max(corr, (resolvedForceMatrix<double>(l) * w - tot.coeffs()).cwiseAbs().maxCoeff());
-    printed = std::max(printed, (resolvedForceMatrixAsPrinted<double>(l) * w - tot.coeffs()).cwiseAbs().maxCoeff());
+    printed = std::max(printed, (resolvedForceMatrixAsPrinted(l) * w - tot.coeffs()).cwiseAbs().maxCoeff());
     const W target(V6(rv6(g) * 10));
     calib = std::max(calib, (resolvedForceMatrix<double>(l) * wristSensorSignals<double>(l, target) - target.coeffs()).cwiseAbs().maxCoeff());
   }

@@ -226,6 +226,21 @@ void geodesicEquation(Context& ctx) {
   ctx.checkEqual("two coincident joint axes (singular J): InvalidInput, not NaN", 1, threw ? 1 : 0);
 }
 
+/// The "anti-symmetric" reading Γ^i_jk = ½W_i([s_j, s_k]) for all j ≠ k (0 for j = k), W_i the rows of J⁻¹.
+// GF §15.1 line 9581 as printed (erratum E15.1)
+std::vector<DM> christoffelAsPrinted(const JointSpaceGeometry<double>& geo, const DV& th) {
+  const ScrewMatrix<double> J = geo.screws(th);
+  const DM W = geo.coScrews(J);
+  std::vector<DM> G(6, DM::Zero(6, 6));
+  for (int j = 0; j < 6; ++j)
+    for (int k = 0; k < 6; ++k) {
+      if (j == k) continue;
+      const DV w = W * br(J.col(j), J.col(k)) / 2.0;
+      for (int i = 0; i < 6; ++i) G[std::size_t(i)](j, k) = w(i);
+    }
+  return G;
+}
+
 void christoffel(Context& ctx) {
   auto g = std::mt19937_64(1517);
   const JointSpaceGeometry<double> geo(randomScrews(g, 6), InvariantMetric<double>{1, 0.3});
@@ -238,7 +253,7 @@ void christoffel(Context& ctx) {
       return geo.pullbackMetric(a);
     }, 1e-4));
   const DM Gi = geo.pullbackMetric(th).inverse();
-  const auto book = geo.christoffelBook(th), printed = geo.christoffelBook(th, DgPrinting::AsPrinted);
+  const auto book = geo.christoffelBook(th), printed = christoffelAsPrinted(geo, th);
   double err = 0, errP = 0, sym = 0, scale = 0;
   for (int j = 0; j < 6; ++j)
     for (int k = 0; k < 6; ++k) {

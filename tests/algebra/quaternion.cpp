@@ -57,7 +57,7 @@ TEMPLATE_TEST_CASE("quaternion product, norm and the map to SO(3)", "[quaternion
     // GF-2.2.2-SO3-to-quaternion-charts (corrected): each chart returns 2·q_k·(w:x:y:z).
     const Quat<S> u(a.coeffs() / a.norm());
     for (int c = 1; c <= 4; ++c) {
-      const Quat<S> qc = quaternionFromRotationChart(R, c, false);
+      const Quat<S> qc = quaternionFromRotationChart(R, c);
       const S qk = c == 1 ? u.w() : u.vec()(c - 2);
       CHECK(maxAbs(Vec4<S>(qc.coeffs() - S(2) * qk * u.coeffs())) <= S(4) * tol);
     }
@@ -79,8 +79,17 @@ TEMPLATE_TEST_CASE("quaternion charts as printed return a doubled coordinate (E2
   // The catalogue's demo point (0.8 : 0.2 : −0.3 : 0.1): printed chart 1 gives w/x = 8, not 4.
   const Quat<S> q(S(8) / S(10), S(2) / S(10), -S(3) / S(10), S(1) / S(10));
   const Mat3<S> R = rotationFromQuaternion(q);
-  const Quat<S> printed = quaternionFromRotationChart(R, 1, true);
-  const Quat<S> fixed = quaternionFromRotationChart(R, 1, false);
+  // GF §2.2.2 seed lines 635–649 as printed (erratum E2.2): chart c with the full diagonal-type
+  // entry 1 ± r11 ± r22 ± r33 where the library halves it.
+  const auto chartAsPrinted = [&](int c) {
+    const S d[4] = {S(1) + R(0, 0) + R(1, 1) + R(2, 2), S(1) + R(0, 0) - R(1, 1) - R(2, 2),
+                    S(1) - R(0, 0) + R(1, 1) - R(2, 2), S(1) - R(0, 0) - R(1, 1) + R(2, 2)};
+    Quat<S> p = quaternionFromRotationChart(R, c);
+    p.coeffs()(c == 1 ? 3 : c - 2) = d[c - 1];  // Eigen stores (x, y, z, w)
+    return p;
+  };
+  const Quat<S> printed = chartAsPrinted(1);
+  const Quat<S> fixed = quaternionFromRotationChart(R, 1);
   using std::abs;
   CHECK(abs(printed.w() / printed.x() - S(8)) <= S(8) * tol);
   CHECK(abs(fixed.w() / fixed.x() - S(4)) <= S(8) * tol);
@@ -91,7 +100,7 @@ TEMPLATE_TEST_CASE("quaternion charts as printed return a doubled coordinate (E2
     const int idx = c == 1 ? 3 : c - 2;  // Eigen stores (x, y, z, w)
     expect.coeffs()(idx) *= S(2);
     const S qk = c == 1 ? u.w() : u.vec()(c - 2);
-    CHECK(maxAbs(Vec4<S>(quaternionFromRotationChart(R, c, true).coeffs() -
+    CHECK(maxAbs(Vec4<S>(chartAsPrinted(c).coeffs() -
                          S(2) * qk * expect.coeffs())) <= S(4) * tol);
   }
   // Half-turns (w = 0, chart 1 is 0): Shepperd picks another chart.
@@ -100,7 +109,7 @@ TEMPLATE_TEST_CASE("quaternion charts as printed return a doubled coordinate (E2
   CHECK(shepperdChart(half) == 3);
   const Quat<S> hq = quaternionFromRotation(half);
   CHECK(maxAbs(Vec4<S>(hq.coeffs().cwiseAbs() - Vec4<S>(0, 1, 0, 0))) <= tol);
-  CHECK_THROWS_WITH(quaternionFromRotationChart(R, 5, false), Contains("chart must be"));
+  CHECK_THROWS_WITH(quaternionFromRotationChart(R, 5), Contains("chart must be"));
   const S nan = std::numeric_limits<S>::quiet_NaN();
   CHECK_THROWS_WITH(rotationFromQuaternion(Quat<S>(nan, S(0), S(0), S(1))), Contains("NaN"));
 }

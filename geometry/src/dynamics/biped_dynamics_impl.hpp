@@ -110,27 +110,21 @@ template <class S> std::array<Eigen::Matrix<S, 2, 1>, 5> PlanarBiped<S>::jointCe
 }
 
 // GF §14.5 lines 9256–9284, GF-14.5-biped-vertical-foot-force (corrected, erratum 10)
-template <class S> Eigen::Matrix<S, 2, 1> PlanarBiped<S>::verticalForceAlpha(const DynVector<S>& theta, GfPrinting printing) const {
+template <class S> Eigen::Matrix<S, 2, 1> PlanarBiped<S>::verticalForceAlpha(const DynVector<S>& theta) const {
   using std::abs;
   const auto j = jointCentres(theta);
   const S xh = j[0](0), yh = j[0](1), xk = j[1](0), yk = j[1](1), xa = j[2](0), ya = j[2](1);
   const S scale = (p_.thighLength + p_.shankLength) * (p_.thighLength + p_.shankLength);
-  if (printing == GfPrinting::Corrected) {
-    const S D = (ya - yk) * (xa - xh) + (yh - ya) * (xa - xk);
-    if (!(abs(D) > Tolerance<S>::input() * scale))
-      throw InvalidInput("PlanarBiped::verticalForceAlpha: the right leg is straight (D = 0): the foot force is not determined");
-    return V2<S>((ya - yk) / D, (yh - ya) / D);
-  }
-  const S D = (xa - xk) * (ya - yh) + (xh - xa) * (ya - yk);
+  const S D = (ya - yk) * (xa - xh) + (yh - ya) * (xa - xk);
   if (!(abs(D) > Tolerance<S>::input() * scale))
-    throw InvalidInput("PlanarBiped::verticalForceAlpha: the right leg is straight (Δ = 0)");
-  return V2<S>((xa - xk) / D, (xh - xa) / D);
+    throw InvalidInput("PlanarBiped::verticalForceAlpha: the right leg is straight (D = 0): the foot force is not determined");
+  return V2<S>((ya - yk) / D, (yh - ya) / D);
 }
 
 template <class S>
 S PlanarBiped<S>::verticalFootForceAlpha(const DynVector<S>& theta, const DynVector<S>& thetaDot, const DynVector<S>& thetaDDot,
-                                         const DynVector<S>& tau, GfPrinting printing) const {
-  const V2<S> a = verticalForceAlpha(theta, printing);
+                                         const DynVector<S>& tau) const {
+  const V2<S> a = verticalForceAlpha(theta);
   const DynVector<S> E = model_.tree().inverseDynamics(theta, thetaDot, thetaDDot);
   return a(0) * (E(3) - tau(3)) + a(1) * (E(4) - tau(4));
 }

@@ -72,11 +72,11 @@ template <class S> std::array<PVec<S>, 4> FourBar<S>::screws(const FourBarPostur
 }
 
 // GF §14.4 lines 9171–9181, GF-14.4-four-bar-null-vector (corrected, erratum 8)
-template <class S> Eigen::Matrix<S, 4, 1> FourBar<S>::alpha(const FourBarPosture<S>& p, GfPrinting printing) const {
+template <class S> Eigen::Matrix<S, 4, 1> FourBar<S>::alpha(const FourBarPosture<S>& p) const {
   using std::sin;
   const S d1 = d_[0], d2 = d_[1], d4 = d_[3], t1 = p.theta1, t2 = p.theta2;
   Eigen::Matrix<S, 4, 1> a;
-  a(0) = (printing == GfPrinting::Corrected ? d1 * d2 : d1 * d4) * sin(t2) - d2 * d4 * sin(t1 + t2);
+  a(0) = d1 * d2 * sin(t2) - d2 * d4 * sin(t1 + t2);
   a(1) = d1 * d4 * sin(t1) + d2 * d4 * sin(t1 + t2);
   a(2) = -d1 * d4 * sin(t1);
   a(3) = -d1 * d2 * sin(t2);
@@ -129,10 +129,10 @@ template <class S> FourBarMotion<S> FourBar<S>::motion(const S& theta1, const S&
 }
 
 // GF §14.4 line 9195, GF-14.4-four-bar-eom (corrected α, erratum 8)
-template <class S> S FourBar<S>::torqueAlpha(const S& theta1, const S& theta1Dot, const S& theta1DDot, GfPrinting printing) const {
+template <class S> S FourBar<S>::torqueAlpha(const S& theta1, const S& theta1Dot, const S& theta1DDot) const {
   const FourBarMotion<S> m = motion(theta1, theta1Dot, theta1DDot);
   const std::array<PVec<S>, 4> s = screws(m.posture);
-  const Eigen::Matrix<S, 4, 1> a = alpha(m.posture, printing);
+  const Eigen::Matrix<S, 4, 1> a = alpha(m.posture);
   const S lhs = m.twistDot[0].dot(m.inertia[0] * (a(0) * s[0])) +
                 m.twistDot[1].dot(m.inertia[1] * PVec<S>(a(0) * s[0] + a(1) * s[1])) -
                 m.twistDot[2].dot(m.inertia[2] * (a(3) * s[3]));
@@ -148,14 +148,13 @@ template <class S> S FourBar<S>::kineticEnergy(const S& theta1, const S& theta1D
 
 // GF §14.4 lines 9199–9203, GF-14.4-four-bar-shaking-moment (corrected sign of the θ̈₄ term, erratum 9)
 template <class S>
-S FourBar<S>::shakingMomentLhs(const S& theta1, const S& theta1Dot, const S& theta1DDot, GfPrinting printing) const {
+S FourBar<S>::shakingMomentLhs(const S& theta1, const S& theta1Dot, const S& theta1DDot) const {
   const FourBarMotion<S> m = motion(theta1, theta1Dot, theta1DDot);
   const std::array<PVec<S>, 4> s = screws(m.posture);
   const PMat<S>&N1 = m.inertia[0], &N2 = m.inertia[1], &N3 = m.inertia[2];
   const S t1d = m.rate(0), t2d = m.rate(1), t4d = m.rate(3), t1dd = m.acc(0), t2dd = m.acc(1), t4dd = m.acc(3);
   const PVec<S> b12 = planarBracket<S>(s[0], s[1]), b14 = planarBracket<S>(s[0], s[3]);
-  const S sign4 = printing == GfPrinting::Corrected ? S(-1) : S(1);
-  return t1dd * s[0].dot(N1 * s[0]) + t1dd * s[0].dot(N2 * s[0]) + t2dd * s[0].dot(N2 * s[1]) + sign4 * t4dd * s[0].dot(N3 * s[3]) +
+  return t1dd * s[0].dot(N1 * s[0]) + t1dd * s[0].dot(N2 * s[0]) + t2dd * s[0].dot(N2 * s[1]) - t4dd * s[0].dot(N3 * s[3]) +
          S(2) * t1d * t2d * s[0].dot(N2 * b12) + t2d * t2d * s[1].dot(N2 * b12) + t4d * t4d * s[3].dot(N3 * b14);
 }
 

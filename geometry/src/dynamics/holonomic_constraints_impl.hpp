@@ -43,16 +43,14 @@ template <class S> Mat6X<S> quadricSurfaceWrenches(const S& kx, const S& ky, con
 
 // GF §14.2.1 lines 8896–8924 (corrected, errata 5, 6)
 template <class S>
-Vec3<S> quadricSurfaceQuartics(const S& kx, const S& ky, const Eigen::Matrix<S, 4, 1>& a, const Eigen::Matrix<S, 4, 1>& b,
-                               GfPrinting printing) {
+Vec3<S> quadricSurfaceQuartics(const S& kx, const S& ky, const Eigen::Matrix<S, 4, 1>& a, const Eigen::Matrix<S, 4, 1>& b) {
   const S X = a(0) * b(1) - a(1) * b(0) + a(2) * b(3) - a(3) * b(2);
   const S Y = a(0) * b(2) - a(1) * b(3) - a(2) * b(0) + a(3) * b(1);
   const S Z = a(0) * b(3) + a(1) * b(2) - a(2) * b(1) - a(3) * b(0);
   const S na = a.squaredNorm();
   const S n3 = a(0) * a(0) - a(1) * a(1) - a(2) * a(2) + a(3) * a(3);
-  const S f = printing == GfPrinting::Corrected ? S(1) : S(2);
-  return Vec3<S>(f * kx * X * X + f * ky * Y * Y - Z * na, kx * n3 * X + f * (a(0) * a(2) + a(1) * a(3)) * na,
-                 ky * n3 * Y + f * (a(2) * a(3) - a(0) * a(1)) * na);
+  return Vec3<S>(kx * X * X + ky * Y * Y - Z * na, kx * n3 * X + (a(0) * a(2) + a(1) * a(3)) * na,
+                 ky * n3 * Y + (a(2) * a(3) - a(0) * a(1)) * na);
 }
 
 template <class S>
@@ -112,7 +110,7 @@ template <class S> ConstrainedTree<S> constrainedSerialRobot(const SerialDynamic
   template Mat6X<S> quadricSurfaceFreedoms<S>(const S&, const S&, const S&, const S&);                    \
   template Mat6X<S> quadricSurfaceWrenches<S>(const S&, const S&, const S&, const S&);                    \
   template Vec3<S> quadricSurfaceQuartics<S>(const S&, const S&, const Eigen::Matrix<S, 4, 1>&,           \
-                                             const Eigen::Matrix<S, 4, 1>&, GfPrinting);                  \
+                                             const Eigen::Matrix<S, 4, 1>&);                              \
   template class ConstrainedRigidBody<S>;                                                                \
   template ConstrainedTree<S> constrainedSerialRobot<S>(const SerialDynamics<S>&, const std::vector<Vec6<S>>&);
 

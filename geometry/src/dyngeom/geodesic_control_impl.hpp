@@ -28,46 +28,26 @@ DgVector<S> geodesicControlTorque(const SerialDynamics<S>& robot, const JointSpa
   switch (c.law) {
     case GeodesicLaw::Geodesic: break;
     case GeodesicLaw::VelocityTracking: a = c.lambda * (c.sd - q6); break;
-    case GeodesicLaw::Accelerating: {
-      const S sgn = c.printing == DgPrinting::AsPrinted ? S(-1) : S(1);
-      a = c.gamma * (S(1) + sgn * c.lambda * t) * c.sd - c.lambda * q6;
-      break;
-    }
+    case GeodesicLaw::Accelerating: a = c.gamma * (S(1) + c.lambda * t) * c.sd - c.lambda * q6; break;
   }
-  DgVector<S> tau;
-  if (c.printing == DgPrinting::Corrected) {
-    const DgVector<S> acc = W * (a - geo.velocityProductTerm(J, thetaDot));
-    tau = robot.inverseDynamics(theta, thetaDot, acc);
-  } else {
-    // the printed law, term by term: Σ_jk (B_ijk − A_ilΓ^l_ik)θ̇_jθ̇_k + C_i + A_il W_l(a)
-    const auto B = robot.coriolisTensor(theta);
-    const DgMatrix<S> A = robot.massMatrix(theta);
-    const auto G = geo.christoffelBook(theta);
-    const S sumTd = thetaDot.sum();
-    tau = robot.gravityTorque(theta) + A * (W * a);
-    for (int i = 0; i < n; ++i) {
-      S v = thetaDot.dot(B[std::size_t(i)] * thetaDot);
-      for (int l = 0; l < n; ++l)
-        for (int k = 0; k < n; ++k) v -= A(i, l) * G[std::size_t(l)](i, k) * sumTd * thetaDot(k);
-      tau(i) += v;
-    }
-  }
+  const DgVector<S> acc = W * (a - geo.velocityProductTerm(J, thetaDot));
+  DgVector<S> tau = robot.inverseDynamics(theta, thetaDot, acc);
   if (c.friction.size() == n) tau += c.friction.cwiseProduct(thetaDot);
   return tau;
 }
 
 template <class S>
-std::vector<ClosedLoopSample<S>> simulateGeodesicControl(const SerialDynamics<S>& robot, const GeodesicController<S>& c,
-                                                         const DgVector<S>& mu, const DgVector<S>& theta0,
-                                                         const DgVector<S>& thetaDot0, const S& h, int steps, int every) {
+std::vector<ClosedLoopSample<S>> simulateClosedLoop(const SerialDynamics<S>& robot, const TorqueLaw<S>& law,
+                                                    const DgVector<S>& mu, const DgVector<S>& theta0,
+                                                    const DgVector<S>& thetaDot0, const S& h, int steps, int every) {
   const int n = robot.dof();
   if (!(h > S(0)) || steps < 0 || every < 1)
-    throw InvalidInput("simulateGeodesicControl: need h > 0, steps >= 0, every >= 1");
+    throw InvalidInput("simulateClosedLoop: need h > 0, steps >= 0, every >= 1");
   if ((mu.size() != 0 && mu.size() != n) || theta0.size() != n || thetaDot0.size() != n)
-    throw InvalidInput("simulateGeodesicControl: plantFriction, theta0, thetaDot0 must have one entry per joint");
+    throw InvalidInput("simulateClosedLoop: plantFriction, theta0, thetaDot0 must have one entry per joint");
   const JointSpaceGeometry<S> geo = jointSpaceGeometryOf(robot);
   auto accel = [&](const DgVector<S>& th, const DgVector<S>& v, const S& t) {
-    DgVector<S> tau = geodesicControlTorque(robot, geo, c, th, v, t);
+    DgVector<S> tau = law(th, v, t);
     if (mu.size() == n) tau -= mu.cwiseProduct(v);
     return DgVector<S>(robot.forwardDynamics(th, v, tau));
   };
@@ -93,11 +73,25 @@ std::vector<ClosedLoopSample<S>> simulateGeodesicControl(const SerialDynamics<S>
   return out;
 }
 
+template <class S>
+std::vector<ClosedLoopSample<S>> simulateGeodesicControl(const SerialDynamics<S>& robot, const GeodesicController<S>& c,
+                                                         const DgVector<S>& mu, const DgVector<S>& theta0,
+                                                         const DgVector<S>& thetaDot0, const S& h, int steps, int every) {
+  const JointSpaceGeometry<S> geo = jointSpaceGeometryOf(robot);
+  const TorqueLaw<S> law = [&](const DgVector<S>& th, const DgVector<S>& v, const S& t) {
+    return geodesicControlTorque(robot, geo, c, th, v, t);
+  };
+  return simulateClosedLoop(robot, law, mu, theta0, thetaDot0, h, steps, every);
+}
+
 #define SOMA_INSTANTIATE_GEODESIC_CONTROL(S)                                                                         \
   template DgVector<S> geodesicControlTorque<S>(const SerialDynamics<S>&, const JointSpaceGeometry<S>&,       \
                                                 const GeodesicController<S>&, const DgVector<S>&,             \
                                                 const DgVector<S>&, const S&);                                \
   template JointSpaceGeometry<S> jointSpaceGeometryOf<S>(const SerialDynamics<S>&, InvariantMetric<S>);      \
+  template std::vector<ClosedLoopSample<S>> simulateClosedLoop<S>(                                            \
+      const SerialDynamics<S>&, const TorqueLaw<S>&, const DgVector<S>&, const DgVector<S>&, const DgVector<S>&, \
+      const S&, int, int);                                                                                    \
   template std::vector<ClosedLoopSample<S>> simulateGeodesicControl<S>(                                       \
       const SerialDynamics<S>&, const GeodesicController<S>&, const DgVector<S>&, const DgVector<S>&,        \
       const DgVector<S>&, const S&, int, int);

@@ -89,14 +89,12 @@ Vec6<S> secondFundamentalWrench(const HybridProjectors<S>& p, const Mat6<S>& N6,
 }
 // GF §15.4.4 lines 10026, 10034 (corrected, erratum E15.9)
 template <class S>
-DgVector<S> constraintMultipliers(const HybridProjectors<S>& p, const Mat6<S>& N6, const Vec6<S>& V, const Vec6<S>& Vdot,
-                                  DgPrinting printing) {
+DgVector<S> constraintMultipliers(const HybridProjectors<S>& p, const Mat6<S>& N6, const Vec6<S>& V, const Vec6<S>& Vdot) {
   const Eigen::Index m = p.Y.rows();
   DgVector<S> lam(m);
   for (Eigen::Index j = 0; j < m; ++j) {
     const Vec6<S> zj = p.Y.row(j).transpose();
-    const Vec6<S> zi = printing == DgPrinting::AsPrinted ? Vec6<S>(p.Y.row(0).transpose()) : zj;
-    lam(j) = zi.dot(N6 * Vdot) + V.dot(N6 * br<S>(zj, V));
+    lam(j) = zj.dot(N6 * Vdot) + V.dot(N6 * br<S>(zj, V));
   }
   return lam;
 }
@@ -126,7 +124,7 @@ template <class S> DgVector<S> forceControlTorque(const HybridProjectors<S>& p, 
   template Vec6<S> secondFundamentalWrench<S>(const HybridProjectors<S>&, const Mat6<S>&, const Vec6<S>&,      \
                                               const Vec6<S>&);                                                 \
   template DgVector<S> constraintMultipliers<S>(const HybridProjectors<S>&, const Mat6<S>&, const Vec6<S>&,     \
-                                                const Vec6<S>&, DgPrinting);                                   \
+                                                const Vec6<S>&);                                               \
   template Vec6<S> hybridVelocityError<S>(const HybridProjectors<S>&, const Mat6<S>&, const Vec6<S>&,          \
                                           const Vec6<S>&);                                                     \
   template Vec6<S> hybridAccelerationError<S>(const HybridProjectors<S>&, const Mat6<S>&, const Vec6<S>&,      \

@@ -90,14 +90,14 @@ template <class S> DgMatrix<S> JointSpaceGeometry<S>::coScrews(const ScrewMatrix
 
 // GF §15.1 line 9581 (corrected, erratum E15.1: the case formula is symmetric in j, k)
 template <class S>
-std::vector<DgMatrix<S>> JointSpaceGeometry<S>::christoffelBook(const DgVector<S>& theta, DgPrinting printing) const {
+std::vector<DgMatrix<S>> JointSpaceGeometry<S>::christoffelBook(const DgVector<S>& theta) const {
   const ScrewMatrix<S> J = screws(theta);
   const DgMatrix<S> W = coScrews(J);
   std::vector<DgMatrix<S>> G(6, DgMatrix<S>::Zero(6, 6));
   for (int j = 0; j < 6; ++j)
     for (int k = 0; k < 6; ++k) {
       if (j == k) continue;
-      const Vec6<S> b = (printing == DgPrinting::AsPrinted || j < k) ? br<S>(J.col(j), J.col(k)) : br<S>(J.col(k), J.col(j));
+      const Vec6<S> b = j < k ? br<S>(J.col(j), J.col(k)) : br<S>(J.col(k), J.col(j));
       const DgVector<S> w = W * b / S(2);
       for (int i = 0; i < 6; ++i) G[std::size_t(i)](j, k) = w(i);
     }

@@ -166,9 +166,6 @@ template <class S> bool inDualFrictionCone(const SE3Tangent<S>& s, const S& mu) 
   const Vec3<S> v = s.lin();
   return v.z() >= S(0) && v.z() * v.z() >= mu * mu * (v.x() * v.x() + v.y() * v.y());
 }
-template <class S> bool inDualFrictionConeAsPrinted(const SE3Tangent<S>& s, const S& mu) {
-  return s.ang().squaredNorm() == S(0) && inDualFrictionCone<S>(s, mu);
-}
 
 template <class S> Vec3<S> planarWrench(const Vec2<S>& p, const Vec2<S>& f) {
   return Vec3<S>(p.x() * f.y() - p.y() * f.x(), f.x(), f.y());
@@ -236,7 +233,6 @@ template <class S> ContactMotion classifyObjectMotion(const S& kx, const S& ky, 
   template WrenchSet<S> frictionConeEdges<S>(const Vec3<S>&, const Vec3<S>&, const S&, int);              \
   template Wrench<S> standardFrictionWrench<S>(const S&, const S&, const S&);                             \
   template bool inDualFrictionCone<S>(const SE3Tangent<S>&, const S&);                                    \
-  template bool inDualFrictionConeAsPrinted<S>(const SE3Tangent<S>&, const S&);                           \
   template Vec3<S> planarWrench<S>(const Vec2<S>&, const Vec2<S>&);                                       \
   template WrenchSet<S> planarFrictionConeEdges<S>(const Vec2<S>&, const Vec2<S>&, const S&);             \
   template bool planarTwoFingerForceClosure<S>(const Vec2<S>&, const Vec2<S>&, const Vec2<S>&,           \

@@ -31,11 +31,6 @@ template <class S> Mat68<S> resolvedForceMatrix(const S& l) {
   a(5, 1) = S(1), a(5, 3) = S(1), a(5, 5) = S(1), a(5, 7) = S(1);
   return a;
 }
-template <class S> Mat68<S> resolvedForceMatrixAsPrinted(const S& l) {
-  Mat68<S> a = resolvedForceMatrix<S>(l);
-  a(1, 5) = -l;  // GF line 7410 as printed
-  return a;
-}
 
 template <class S> Vec8<S> wristSensorSignals(const S& l, const Wrench<S>& W) {
   if (!isFinite(l) || !(l > S(0)))
@@ -52,7 +47,6 @@ template <class S> Vec8<S> wristSensorSignals(const S& l, const Wrench<S>& W) {
   template std::array<SensorGauge<S>, 8> wristSensorGauges<S>(const S&);                     \
   template std::array<Wrench<S>, 8> wristSensorWrenches<S>(const S&, const Vec8<S>&);         \
   template Mat68<S> resolvedForceMatrix<S>(const S&);                                         \
-  template Mat68<S> resolvedForceMatrixAsPrinted<S>(const S&);                                \
   template Vec8<S> wristSensorSignals<S>(const S&, const Wrench<S>&);
 
 }  // namespace soma

@@ -30,24 +30,6 @@ template <class S> S quadricResidual(const Mat8<S>& Q, const Vec8<S>& x) {
   return n2 > S(0) ? S(x.dot(Q * x) / n2) : S(0);
 }
 
-template <class S> Vec4<S> stewartLegExpressionAsPrinted(const Vec8<S>& x, const Vec3<S>& p, const Vec3<S>& q,
-                                                         const S& L) {
-  const Vec4<S> h0 = x.template head<4>(), h1 = x.template tail<4>();
-  const Vec4<S> qq(S(0), q.x(), q.y(), q.z()), pp(S(0), p.x(), p.y(), p.z());
-  auto mul = [](const Vec4<S>& u, const Vec4<S>& v) { return Vec4<S>(quaternionLeftMatrix<S>(u) * v); };
-  auto conj = [](const Vec4<S>& u) { return Vec4<S>(u(0), -u(1), -u(2), -u(3)); };
-  const Vec4<S> h0s = conj(h0), h1s = conj(h1);
-  const S k = p.squaredNorm() + q.squaredNorm() - L * L;
-  return k * mul(h0, h0s) + mul(mul(mul(h0, qq), h0s), pp) + mul(pp, mul(mul(h0, qq), h0s)) +
-         S(2) * mul(mul(h0, qq), h1s) - S(2) * mul(mul(h1, qq), h0s) + S(2) * mul(mul(pp, h1), h0s) -
-         S(2) * mul(mul(h0, h1s), pp) + S(4) * mul(h1, h1s);
-}
-
-template <class S> S sphericalSphericalFormAsPrinted(const Vec8<S>& x, const S& l) {
-  const S a0 = x(0), a1 = x(1), a2 = x(2), a3 = x(3), c0 = x(4), c1 = x(5), c2 = x(6), c3 = x(7);
-  return (c0 - l * a3) * c0 + (c1 + l * a2) * c1 + (c2 - l * a1) * c2 + (c3 + l * a0) * c3;
-}
-
 template <class S> Eigen::Matrix<S, 4, 8> twoRevoluteEquations(const S& l, const S& alpha) {
   using std::cos;
   using std::sin;
@@ -65,8 +47,6 @@ template <class S> Eigen::Matrix<S, 4, 8> twoRevoluteEquations(const S& l, const
   template Mat8<S> sphereConstraintQuadric<S>(const Vec3<S>&, const Vec3<S>&, const S&); \
   template Mat8<S> studyQuadricMatrix<S>();                                              \
   template S quadricResidual<S>(const Mat8<S>&, const Vec8<S>&);                         \
-  template Vec4<S> stewartLegExpressionAsPrinted<S>(const Vec8<S>&, const Vec3<S>&, const Vec3<S>&, const S&); \
-  template S sphericalSphericalFormAsPrinted<S>(const Vec8<S>&, const S&);               \
   template Eigen::Matrix<S, 4, 8> twoRevoluteEquations<S>(const S&, const S&);
 
 }  // namespace soma

@@ -103,7 +103,17 @@ TEMPLATE_TEST_CASE("GF §15.1: the book's joint-space Christoffel symbols equal 
     CHECK(maxAbsDiff(book, lc) <= tol * scale);
     for (const auto& m : book) CHECK((m - m.transpose()).cwiseAbs().maxCoeff() <= tol * scale);  // symmetric (E15.1)
     // the printed "anti-symmetric" reading is not the Levi-Civita connection
-    CHECK(maxAbsDiff(geo.christoffelBook(th, DgPrinting::AsPrinted), lc) >= scale / S(10));
+    // GF §15.1 line 9581 as printed (erratum E15.1): Γ^i_jk = ½W_i([s_j, s_k]) for all j ≠ k
+    const ScrewMatrix<S> J = geo.screws(th);
+    const DgMatrix<S> W = geo.coScrews(J);
+    std::vector<DgMatrix<S>> printed(6, DgMatrix<S>::Zero(6, 6));
+    for (int j = 0; j < 6; ++j)
+      for (int k = 0; k < 6; ++k) {
+        if (j == k) continue;
+        const DgVector<S> w = W * Vec6<S>(SE3Tangent<S>(Vec6<S>(J.col(j))).ad() * J.col(k)) / S(2);
+        for (int i = 0; i < 6; ++i) printed[std::size_t(i)](j, k) = w(i);
+      }
+    CHECK(maxAbsDiff(printed, lc) >= scale / S(10));
   }
 }
 

@@ -103,8 +103,10 @@ TEMPLATE_TEST_CASE("GF-12.3 wrist sensor: the gauge wrenches sum to the correcte
   Wrench<S> tot;
   for (const auto& W : wristSensorWrenches<S>(l, w)) tot += W;
   CHECK((resolvedForceMatrix<S>(l) * w - tot.coeffs()).cwiseAbs().maxCoeff() <= tolId<S>());
-  // the printed row 2 differs by 2 l w₆
-  const Vec6<S> printed = resolvedForceMatrixAsPrinted<S>(l) * w;
+  // the printed row 2 differs by 2 l w₆ (GF §12.3 line 7410 as printed, erratum E12.1: −l at (2, 6))
+  Mat68<S> asPrinted = resolvedForceMatrix<S>(l);
+  asPrinted(1, 5) = -l;
+  const Vec6<S> printed = asPrinted * w;
   CHECK(abs(printed(1) - tot.coeffs()(1) + S(2) * l * w(5)) <= tolId<S>());
   CHECK(abs(printed(1) - tot.coeffs()(1)) > S(1000) * tolId<S>());
   // the printed total: (l(w4 − w8), l(w6 − w2), l(w1 − w3 − w5 + w7), w3 + w7, w1 + w5, w2 + w4 + w6 + w8)

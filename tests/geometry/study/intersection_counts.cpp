@@ -2,6 +2,7 @@
 // the constraint quadrics of legs and dyads against motions built directly in SE(3).
 #include "soma/geometry/study/constraint_quadrics.hpp"
 #include "soma/geometry/study/intersection_ring.hpp"
+#include "soma/geometry/study/quaternion_matrices.hpp"
 #include "support/scalars.hpp"
 
 namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
@@ -11,6 +12,25 @@ using soma::test::rng;
 using soma::test::uniform;
 using soma::test::uniformVec;
 using soma::test::unitVec3;
+
+namespace {
+// GF §11.5.4 lines 7263–7278 as printed: the homogenised leg equation with quaternions h₀ = a, h₁ = c,
+// (|p|² + |q|² − L²) h₀h₀* + h₀ q h₀* p + p h₀ q h₀* + 2 h₀ q h₁* − 2 h₁ q h₀* + 2 p h₁ h₀* − 2 h₀ h₁* p + 4 h₁ h₁*
+template <class S> Vec4<S> stewartLegExpressionAsPrinted(const Vec8<S>& x, const Vec3<S>& p, const Vec3<S>& q, const S& L) {
+  const Vec4<S> h0 = x.template head<4>(), h1 = x.template tail<4>();
+  const Vec4<S> qq(S(0), q.x(), q.y(), q.z()), pp(S(0), p.x(), p.y(), p.z());
+  auto mul = [](const Vec4<S>& u, const Vec4<S>& v) { return Vec4<S>(quaternionLeftMatrix<S>(u) * v); };
+  auto conj = [](const Vec4<S>& u) { return Vec4<S>(u(0), -u(1), -u(2), -u(3)); };
+  const Vec4<S> h0s = conj(h0), h1s = conj(h1);
+  return (p.squaredNorm() + q.squaredNorm() - L * L) * mul(h0, h0s) + mul(mul(mul(h0, qq), h0s), pp) +
+         mul(pp, mul(mul(h0, qq), h0s)) + S(2) * mul(mul(h0, qq), h1s) - S(2) * mul(mul(h1, qq), h0s) +
+         S(2) * mul(mul(pp, h1), h0s) - S(2) * mul(mul(h0, h1s), pp) + S(4) * mul(h1, h1s);
+}
+// GF §11.5.3 line 7242 as printed: the S–S link quadric (c₀ − l a₃)c₀ + (c₁ + l a₂)c₁ + (c₂ − l a₁)c₂ + (c₃ + l a₀)c₃
+template <class S> S sphericalSphericalFormAsPrinted(const Vec8<S>& x, const S& l) {
+  return (x(4) - l * x(3)) * x(4) + (x(5) + l * x(2)) * x(5) + (x(6) - l * x(1)) * x(6) + (x(7) + l * x(0)) * x(7);
+}
+}  // namespace
 
 TEST_CASE("StudyClass: Table 11.2 is a commutative, associative graded ring of degree 2", "[study][ring]") {
   using C = StudyClass;

@@ -52,7 +52,8 @@ template <class Tangent> Tangent bch(const Tangent& x, const Tangent& y, int ord
 
 /// Σ_{k=0}^{terms−1} ad(x)^k/(k+1)! — the spatial (left-trivialised) dexp of the Hausdorff
 /// formula, the series of ljac(); with `body = true`, Σ (−1)^k ad^k/(k+1)!, the series of rjac().
-// GF §4.5.2, GF-4.5.2-dexp-hausdorff (corrected 4th term, erratum E4.9)
+// GF §4.5.2, GF-4.5.2-dexp-hausdorff (corrected 4th term, erratum E4.9; the study computes the
+// printed ad²/4! and shows it failing)
 template <class Tangent>
 Eigen::Matrix<typename Tangent::Scalar, Tangent::DoF, Tangent::DoF> dexpSeries(
     const Tangent& x, int terms, bool body = false) {
@@ -67,18 +68,6 @@ Eigen::Matrix<typename Tangent::Scalar, Tangent::DoF, Tangent::DoF> dexpSeries(
     sum += term;
   }
   return sum;
-}
-
-/// The first four terms of the Hausdorff series as the book prints them, with the 4th term
-/// (1/4!)[X,[X,Ẋ]] repeating the 3rd bracket: I + ad/2! + ad²/3! + ad²/4! (erratum E4.9).
-// GF §4.5.2, GF-4.5.2-dexp-hausdorff (as printed)
-template <class Tangent>
-Eigen::Matrix<typename Tangent::Scalar, Tangent::DoF, Tangent::DoF> dexpSeriesPrinted4(
-    const Tangent& x) {
-  using S = typename Tangent::Scalar;
-  using M = Eigen::Matrix<S, Tangent::DoF, Tangent::DoF>;
-  const M a = x.ad();
-  return M::Identity() + a / S(2) + a * a / S(6) + a * a / S(24);
 }
 
 }  // namespace soma

@@ -40,28 +40,26 @@ template <class S> Mat3<S> rotationFromQuaternion(const Quat<S>& q) {
 }
 
 /// One of the book's four charts SO(3) → PR³ (chart = 1..4), as homogeneous coordinates
-/// (w:x:y:z), NOT normalised. `printed = true` gives the formula as the book prints it, with
-/// the full diagonal-type entry (1 + r11 + r22 + r33 etc.) beside halved off-diagonal terms
-/// (erratum E2.2: chart k then returns q with its k-th coordinate doubled); `printed = false`
-/// halves the diagonal-type entry too, so chart k returns 2·q_k·(w:x:y:z). The OCR slip E2.1
-/// (r21 − r21 in chart 1) is not reproduced: both variants use r21 − r12.
+/// (w:x:y:z), NOT normalised, with the diagonal-type entry halved like the others, so chart k
+/// returns 2·q_k·(w:x:y:z). The book prints the full diagonal-type entry (erratum E2.2) and
+/// r21 − r21 in chart 1 (erratum E2.1); the study GF-2.2.2-SO3-to-quaternion-charts
+/// (studies/gf02/matrix_groups.cpp) computes those printed charts and shows them failing.
 // GF §2.2.2, GF-2.2.2-SO3-to-quaternion-charts (corrected: errata E2.1, E2.2)
-template <class S> Quat<S> quaternionFromRotationChart(const Mat3<S>& r, int chart, bool printed) {
+template <class S> Quat<S> quaternionFromRotationChart(const Mat3<S>& r, int chart) {
   const S h = S(1) / S(2);
-  const S f = printed ? S(1) : h;  // factor on the diagonal-type entry
   switch (chart) {
     case 1:
-      return Quat<S>(f * (S(1) + r(0, 0) + r(1, 1) + r(2, 2)), h * (r(2, 1) - r(1, 2)),
+      return Quat<S>(h * (S(1) + r(0, 0) + r(1, 1) + r(2, 2)), h * (r(2, 1) - r(1, 2)),
                      h * (r(0, 2) - r(2, 0)), h * (r(1, 0) - r(0, 1)));
     case 2:
-      return Quat<S>(h * (r(2, 1) - r(1, 2)), f * (S(1) + r(0, 0) - r(1, 1) - r(2, 2)),
+      return Quat<S>(h * (r(2, 1) - r(1, 2)), h * (S(1) + r(0, 0) - r(1, 1) - r(2, 2)),
                      h * (r(0, 1) + r(1, 0)), h * (r(0, 2) + r(2, 0)));
     case 3:
       return Quat<S>(h * (r(0, 2) - r(2, 0)), h * (r(0, 1) + r(1, 0)),
-                     f * (S(1) - r(0, 0) + r(1, 1) - r(2, 2)), h * (r(1, 2) + r(2, 1)));
+                     h * (S(1) - r(0, 0) + r(1, 1) - r(2, 2)), h * (r(1, 2) + r(2, 1)));
     case 4:
       return Quat<S>(h * (r(1, 0) - r(0, 1)), h * (r(0, 2) + r(2, 0)), h * (r(1, 2) + r(2, 1)),
-                     f * (S(1) - r(0, 0) - r(1, 1) + r(2, 2)));
+                     h * (S(1) - r(0, 0) - r(1, 1) + r(2, 2)));
     default: break;
   }
   throw InvalidInput("quaternionFromRotationChart: chart must be 1, 2, 3 or 4, got " +
@@ -84,7 +82,7 @@ template <class S> int shepperdChart(const Mat3<S>& r) {
 /// SO3::fromMatrix for user input). At w = 0 (half-turns) ±q are both returned as-is.
 // GF §2.2.2, GF-2.2.2-SO3-to-quaternion-charts (corrected, errata E2.1, E2.2)
 template <class S> Quat<S> quaternionFromRotation(const Mat3<S>& r) {
-  Quat<S> q = quaternionFromRotationChart(r, shepperdChart(r), false);
+  Quat<S> q = quaternionFromRotationChart(r, shepperdChart(r));
   q.coeffs() /= q.coeffs().norm();
   if (q.w() < S(0)) q.coeffs() = -q.coeffs();
   return q;

@@ -46,12 +46,12 @@ template <class S> class PlanarBiped {
   std::array<Eigen::Matrix<S, 2, 1>, 5> jointCentres(const DynVector<S>& theta) const;
   /// (α_Rh, α_Rk) with W_Rxᵀq̇_Rk = 0, W_Ryᵀq̇_Rk = 1 for q̇_Rk = α_Rh s_h + α_Rk s_Rk (torso and left
   /// leg fixed). GF lines 9268–9282, GF-14.5-biped-vertical-foot-force (corrected, erratum 10:
-  /// α_Rh = (y_Ra − y_Rk)/D, α_Rk = (y_h − y_Ra)/D; AsPrinted: the printed x-based weights).
-  /// InvalidInput for a straight leg (D = 0).
-  Eigen::Matrix<S, 2, 1> verticalForceAlpha(const DynVector<S>& theta, GfPrinting printing = GfPrinting::Corrected) const;
+  /// α_Rh = (y_Ra − y_Rk)/D, α_Rk = (y_h − y_Ra)/D; the book prints x-based weights, computed in
+  /// studies/gf14/mechanisms.cpp). InvalidInput for a straight leg (D = 0).
+  Eigen::Matrix<S, 2, 1> verticalForceAlpha(const DynVector<S>& theta) const;
   /// λ_Ry = α_Rh(E_Rh − τ_Rh) + α_Rk(E_Rk − τ_Rk), E the left sides of the hip and knee joint equations.
   S verticalFootForceAlpha(const DynVector<S>& theta, const DynVector<S>& thetaDot, const DynVector<S>& thetaDDot,
-                           const DynVector<S>& tau, GfPrinting printing = GfPrinting::Corrected) const;
+                           const DynVector<S>& tau) const;
   /// All four multipliers (λ_Rx, λ_Ry, λ_Lx, λ_Ly) from the seven joint equations (least squares,
   /// consistent when τ is).
   DynVector<S> footForces(const DynVector<S>& theta, const DynVector<S>& thetaDot, const DynVector<S>& thetaDDot,

@@ -59,8 +59,9 @@ template <class S> class FourBar {
   /// s₁ … s₄ (GF lines 9149–9157).
   std::array<PVec<S>, 4> screws(const FourBarPosture<S>& p) const;
   /// The null vector α of (s₁ s₂ s₃ s₄), GF lines 9171–9181, GF-14.4-four-bar-null-vector
-  /// (corrected, erratum 8; AsPrinted: α₁ = d₁d₄ sin θ₂ − d₂d₄ sin(θ₁+θ₂)).
-  Eigen::Matrix<S, 4, 1> alpha(const FourBarPosture<S>& p, GfPrinting printing = GfPrinting::Corrected) const;
+  /// (corrected, erratum 8: the book prints α₁ = d₁d₄ sin θ₂ − d₂d₄ sin(θ₁+θ₂); studies/gf14/mechanisms.cpp
+  /// computes it).
+  Eigen::Matrix<S, 4, 1> alpha(const FourBarPosture<S>& p) const;
   /// |α₁| relative to d₁d₂d₄: 0 at a singular (folded / dead-centre) posture.
   S singularityMeasure(const FourBarPosture<S>& p) const;
   /// Joint rates θ̇_i = θ̇₁ α_i/α₁ and accelerations from the differentiated loop equation.
@@ -68,13 +69,13 @@ template <class S> class FourBar {
   FourBarMotion<S> motion(const S& theta1, const S& theta1Dot, const S& theta1DDot) const;
   /// The book's equation of motion solved for τ (GF line 9195, GF-14.4-four-bar-eom):
   /// α₁τ = q̈₁ᵀN₁α₁s₁ + q̈₂ᵀN₂(α₁s₁ + α₂s₂) − q̈₃ᵀN₃α₄s₄.
-  S torqueAlpha(const S& theta1, const S& theta1Dot, const S& theta1DDot, GfPrinting printing = GfPrinting::Corrected) const;
+  S torqueAlpha(const S& theta1, const S& theta1Dot, const S& theta1DDot) const;
   /// E_K = ½ Σ q̇_iᵀN_iq̇_i.
   S kineticEnergy(const S& theta1, const S& theta1Dot) const;
   /// The s₁-paired root equation of GF lines 9199–9203 (left side): Σ terms = τ + R₄ᵀs₁,
   /// GF-14.4-four-bar-shaking-moment (corrected, erratum 9: the θ̈₄ term is −θ̈₄s₁ᵀN₃s₄ with
-  /// q̇₃ = −θ̇₄s₄; AsPrinted: +θ̈₄s₁ᵀN₃s₄).
-  S shakingMomentLhs(const S& theta1, const S& theta1Dot, const S& theta1DDot, GfPrinting printing = GfPrinting::Corrected) const;
+  /// q̇₃ = −θ̇₄s₄; the book prints +θ̈₄s₁ᵀN₃s₄, computed in studies/gf14/mechanisms.cpp).
+  S shakingMomentLhs(const S& theta1, const S& theta1Dot, const S& theta1DDot) const;
   /// θ̈₁ of the free or driven mechanism from the α equation (linear in θ̈₁).
   S crankAcceleration(const S& theta1, const S& theta1Dot, const S& tau) const;
   /// One RK4 step of (θ₁, θ̇₁) under constant τ (the other angles follow from θ₁: no drift).

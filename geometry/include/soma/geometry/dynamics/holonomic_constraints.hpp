@@ -29,10 +29,10 @@ template <class S> Mat6X<S> quadricSurfaceWrenches(const S& kx, const S& ky, con
 /// The three quartics of GF lines 8908, 8922, 8924 on the Study parameters (a₀..a₃, b₀..b₃) of a
 /// pose (h₀ + εh₁, point image (1 + ε(x i + y j + z k)) with x = 2X …): surface k_xX² + k_yY² − Z|a|²
 /// and the alignment quartics k_x n₃ X + (a₀a₂ + a₁a₃)|a|², k_y n₃ Y + (a₂a₃ − a₀a₁)|a|²
-/// (corrected, errata 5, 6; AsPrinted: the factors 2). GF-14.2.1-quadric-surface-constraint-variety
+/// (corrected, errata 5, 6: the book prints factors 2, computed in studies/gf14/constraints.cpp).
+/// GF-14.2.1-quadric-surface-constraint-variety
 template <class S>
-Vec3<S> quadricSurfaceQuartics(const S& kx, const S& ky, const Eigen::Matrix<S, 4, 1>& a, const Eigen::Matrix<S, 4, 1>& b,
-                               GfPrinting printing = GfPrinting::Corrected);
+Vec3<S> quadricSurfaceQuartics(const S& kx, const S& ky, const Eigen::Matrix<S, 4, 1>& a, const Eigen::Matrix<S, 4, 1>& b);
 
 /// A rigid body whose freedoms form a Lie subalgebra span(Z) (a subgroup: fixed point, planar
 /// motion), so the constraint wrenches W are constant in space. GF §14.2.2, GF-14.2.2-constrained-rigid-body
@@ -67,7 +67,7 @@ template <class S> ConstrainedTree<S> constrainedSerialRobot(const SerialDynamic
   extern template Mat6X<S> quadricSurfaceFreedoms<S>(const S&, const S&, const S&, const S&);                     \
   extern template Mat6X<S> quadricSurfaceWrenches<S>(const S&, const S&, const S&, const S&);                     \
   extern template Vec3<S> quadricSurfaceQuartics<S>(const S&, const S&, const Eigen::Matrix<S, 4, 1>&,            \
-                                                    const Eigen::Matrix<S, 4, 1>&, GfPrinting);                   \
+                                                    const Eigen::Matrix<S, 4, 1>&);                               \
   extern template class ConstrainedRigidBody<S>;                                                                 \
   extern template ConstrainedTree<S> constrainedSerialRobot<S>(const SerialDynamics<S>&, const std::vector<Vec6<S>>&);
 SOMA_FOR_EACH_SCALAR(SOMA_HOLONOMIC_EXTERN)

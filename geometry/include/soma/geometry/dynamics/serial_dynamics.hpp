@@ -26,10 +26,6 @@ namespace soma {
 template <class S> using DynVector = Eigen::Matrix<S, Eigen::Dynamic, 1>;
 template <class S> using DynMatrix = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>;
 
-/// Which version of a formula the book misprints: the corrected one (default) or the printed one,
-/// kept so that studies can show the printed formula failing.
-enum class GfPrinting { Corrected, AsPrinted };
-
 /// The chain at one configuration θ, all in the fixed frame (GF §13.2.2, §13.3 line 7965).
 template <class S> struct ChainConfiguration {
   std::vector<SE3<S>> placements;   ///< G_i = exp(θ₁s₁⁰)···exp(θ_i s_i⁰): link i's motion from home
@@ -79,16 +75,14 @@ template <class S> class SerialDynamics {
   DynMatrix<S> massMatrix(const ChainConfiguration<S>& c) const;
   /// B[i](j, k) = B_ijk with x = max(i, j, k):
   /// ½(s_jᵀN̄_x[s_i,s_k] + s_kᵀN̄_x[s_i,s_j] − s_iᵀN̄_x[s_max(j,k), s_min(j,k)]).
-  /// GF §13.2.2 lines 7889–7895, GF-13.2.2-coriolis-B (corrected, erratum 2; AsPrinted: the
-  /// printed third terms [s_k, s_i] (j ≤ k) and [s_i, s_k] (k < j)).
-  std::vector<DynMatrix<S>> coriolisTensor(const DynVector<S>& theta,
-                                           GfPrinting printing = GfPrinting::Corrected) const;
-  std::vector<DynMatrix<S>> coriolisTensor(const ChainConfiguration<S>& c,
-                                           GfPrinting printing = GfPrinting::Corrected) const;
+  /// GF §13.2.2 lines 7889–7895, GF-13.2.2-coriolis-B (corrected, erratum 2: the book prints the
+  /// third terms [s_k, s_i] (j ≤ k) and [s_i, s_k] (k < j); studies/gf13/equations.cpp computes them).
+  std::vector<DynMatrix<S>> coriolisTensor(const DynVector<S>& theta) const;
+  std::vector<DynMatrix<S>> coriolisTensor(const ChainConfiguration<S>& c) const;
   /// C_i = −s_iᵀ N̄_i g = ∂E_P/∂θ_i. GF §13.2.2 line 7899, GF-13.2.2-gravity-C (corrected,
-  /// erratum 1; AsPrinted: +s_iᵀ N̄_i g).
-  DynVector<S> gravityTorque(const DynVector<S>& theta, GfPrinting printing = GfPrinting::Corrected) const;
-  DynVector<S> gravityTorque(const ChainConfiguration<S>& c, GfPrinting printing = GfPrinting::Corrected) const;
+  /// erratum 1: the book prints +s_iᵀ N̄_i g; studies/gf13/equations.cpp computes it).
+  DynVector<S> gravityTorque(const DynVector<S>& theta) const;
+  DynVector<S> gravityTorque(const ChainConfiguration<S>& c) const;
   /// τ = A θ̈ + B θ̇ θ̇ + C from the closed form (O(n³) through the tensor B). GF §13.2.2
   DynVector<S> inverseDynamicsClosedForm(const DynVector<S>& theta, const DynVector<S>& thetaDot,
                                          const DynVector<S>& thetaDDot) const;
@@ -106,15 +100,16 @@ template <class S> class SerialDynamics {
 
   /// E_K = ½ Σ q̇_iᵀ N_i q̇_i from the link velocities (not from A). GF §13.1, §13.4
   S kineticEnergy(const DynVector<S>& theta, const DynVector<S>& thetaDot) const;
-  /// E_P = Σ m_i g z_i (c.o.m. heights). GF §13.4 (corrected, erratum 3; AsPrinted: the printed
-  /// E_P = Σ g̃ᵀc̃_i, which is −Σ m_i g z_i).
-  S potentialEnergy(const DynVector<S>& theta, GfPrinting printing = GfPrinting::Corrected) const;
+  /// E_P = Σ m_i g z_i (c.o.m. heights). GF §13.4 (corrected, erratum 3: the book prints
+  /// E_P = Σ g̃ᵀc̃_i, which is −Σ m_i g z_i; studies/gf13/lagrange.cpp computes it).
+  S potentialEnergy(const DynVector<S>& theta) const;
   /// ∂E_K/∂θ_i = −(Σ_{j≥i} N_j q̇_j)ᵀ [s_i, q̇_i] = B_jik θ̇_j θ̇_k, from the partials of GF §13.4.1
   /// (∂q̇_j/∂θ_i = [s_i, q̇_j − q̇_i], ∂N_j/∂θ_i = −ad(s_i)ᵀN_j − N_j ad(s_i), i ≤ j; errata 4, 5).
   DynVector<S> kineticEnergyGradient(const DynVector<S>& theta, const DynVector<S>& thetaDot) const;
   /// Q_ij = ∂²E_P/∂θ_i∂θ_j = s_aᵀ N̄_a [s_b, g], a = max(i, j), b = min(i, j).
-  /// GF §13.4.3 lines 8206–8210 (corrected, erratum 8; AsPrinted: s_aᵀN̄_a[g, s_b]).
-  DynMatrix<S> potentialHessian(const DynVector<S>& theta, GfPrinting printing = GfPrinting::Corrected) const;
+  /// GF §13.4.3 lines 8206–8210 (corrected, erratum 8: the book prints s_aᵀN̄_a[g, s_b];
+  /// studies/gf13/lagrange.cpp computes it).
+  DynMatrix<S> potentialHessian(const DynVector<S>& theta) const;
   /// A^p, B^p, C^p of a payload of home inertia N_p⁰ on the last link. GF §13.2.3 (C^p corrected,
   /// erratum 1: −s_iᵀN_p g).
   PayloadTerms<S> payloadTerms(const DynVector<S>& theta, const SpatialInertia<S>& payloadHome) const;

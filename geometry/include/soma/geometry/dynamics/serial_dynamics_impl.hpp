@@ -208,7 +208,7 @@ template <class S> DynMatrix<S> SerialDynamics<S>::massMatrix(const DynVector<S>
 namespace detail {
 // GF §13.2.2 lines 7889–7895 and §13.2.3 lines 7911–7917 (corrected, erratum 2)
 template <class S, class TailOf>
-std::vector<DynMatrix<S>> coriolisFromTails(const std::vector<Vec6<S>>& s, TailOf&& tailOf, GfPrinting printing) {
+std::vector<DynMatrix<S>> coriolisFromTails(const std::vector<Vec6<S>>& s, TailOf&& tailOf) {
   const int n = int(s.size());
   std::vector<DynMatrix<S>> B(std::size_t(n), DynMatrix<S>(n, n));
   for (int i = 0; i < n; ++i) {
@@ -219,11 +219,7 @@ std::vector<DynMatrix<S>> coriolisFromTails(const std::vector<Vec6<S>>& s, TailO
         const Vec6<S>&si = s[std::size_t(i)], &sj = s[std::size_t(j)], &sk = s[std::size_t(k)];
         const S t1 = sj.dot(Nb * screwBracket(si, sk));
         const S t2 = sk.dot(Nb * screwBracket(si, sj));
-        Vec6<S> third;
-        if (printing == GfPrinting::Corrected)
-          third = j <= k ? screwBracket(sk, sj) : screwBracket(sj, sk);
-        else
-          third = j <= k ? screwBracket(sk, si) : screwBracket(si, sk);
+        const Vec6<S> third = j <= k ? screwBracket(sk, sj) : screwBracket(sj, sk);
         const S t3 = si.dot(Nb * third);
         B[std::size_t(i)](j, k) = (t1 + t2 - t3) / S(2);
       }
@@ -234,29 +230,27 @@ std::vector<DynMatrix<S>> coriolisFromTails(const std::vector<Vec6<S>>& s, TailO
 }  // namespace detail
 
 template <class S>
-std::vector<DynMatrix<S>> SerialDynamics<S>::coriolisTensor(const ChainConfiguration<S>& c,
-                                                            GfPrinting printing) const {
-  return detail::coriolisFromTails<S>(c.screws, [&](int x) -> const Mat6<S>& { return c.tails[std::size_t(x)]; },
-                                      printing);
+std::vector<DynMatrix<S>> SerialDynamics<S>::coriolisTensor(const ChainConfiguration<S>& c) const {
+  return detail::coriolisFromTails<S>(c.screws, [&](int x) -> const Mat6<S>& { return c.tails[std::size_t(x)]; });
 }
 template <class S>
-std::vector<DynMatrix<S>> SerialDynamics<S>::coriolisTensor(const DynVector<S>& theta, GfPrinting printing) const {
-  return coriolisTensor(configuration(theta), printing);
+std::vector<DynMatrix<S>> SerialDynamics<S>::coriolisTensor(const DynVector<S>& theta) const {
+  return coriolisTensor(configuration(theta));
 }
 
 // GF §13.2.2 line 7899 (corrected, erratum 1): C_i = −s_iᵀ N̄_i g
 template <class S>
-DynVector<S> SerialDynamics<S>::gravityTorque(const ChainConfiguration<S>& c, GfPrinting printing) const {
+DynVector<S> SerialDynamics<S>::gravityTorque(const ChainConfiguration<S>& c) const {
   const Vec6<S> g = gravityScrew();
   DynVector<S> C(dof());
   for (int i = 0; i < dof(); ++i) {
     const S v = c.screws[std::size_t(i)].dot(c.tails[std::size_t(i)] * g);
-    C(i) = printing == GfPrinting::Corrected ? S(-v) : v;
+    C(i) = S(-v);
   }
   return C;
 }
-template <class S> DynVector<S> SerialDynamics<S>::gravityTorque(const DynVector<S>& theta, GfPrinting printing) const {
-  return gravityTorque(configuration(theta), printing);
+template <class S> DynVector<S> SerialDynamics<S>::gravityTorque(const DynVector<S>& theta) const {
+  return gravityTorque(configuration(theta));
 }
 
 // GF §13.2.2: τ_i = A_ij θ̈_j + B_ijk θ̇_j θ̇_k + C_i
@@ -388,7 +382,7 @@ template <class S> S SerialDynamics<S>::kineticEnergy(const DynVector<S>& theta,
 }
 
 // GF §13.4 (corrected, erratum 3): E_P = Σ m_i g z_i
-template <class S> S SerialDynamics<S>::potentialEnergy(const DynVector<S>& theta, GfPrinting printing) const {
+template <class S> S SerialDynamics<S>::potentialEnergy(const DynVector<S>& theta) const {
   checkState(theta, "θ");
   SE3<S> G;
   S e = S(0);
@@ -397,7 +391,7 @@ template <class S> S SerialDynamics<S>::potentialEnergy(const DynVector<S>& thet
     G = G * SE3Tangent<S>(Vec6<S>(screws_[k].coeffs() * theta(i))).exp();
     e += links_[k].mass() * g_ * G.act(links_[k].centreOfMass())(2);
   }
-  return printing == GfPrinting::Corrected ? e : S(-e);
+  return e;
 }
 
 // GF §13.4.1 (errata 4, 5): ∂E_K/∂θ_i = −(Σ_{j≥i} N_j q̇_j)ᵀ [s_i, q̇_i]
@@ -417,15 +411,14 @@ DynVector<S> SerialDynamics<S>::kineticEnergyGradient(const DynVector<S>& theta,
 }
 
 // GF §13.4.3 lines 8206–8210 (corrected, erratum 8): Q_ij = s_aᵀ N̄_a [s_b, g], a = max, b = min
-template <class S> DynMatrix<S> SerialDynamics<S>::potentialHessian(const DynVector<S>& theta, GfPrinting printing) const {
+template <class S> DynMatrix<S> SerialDynamics<S>::potentialHessian(const DynVector<S>& theta) const {
   const ChainConfiguration<S> c = configuration(theta);
   const Vec6<S> g = gravityScrew();
   const int n = dof();
   DynMatrix<S> Q(n, n);
   for (int a = 0; a < n; ++a) {
     for (int b = 0; b <= a; ++b) {
-      const Vec6<S> br = printing == GfPrinting::Corrected ? detail::screwBracket(c.screws[std::size_t(b)], g)
-                                                           : detail::screwBracket(g, c.screws[std::size_t(b)]);
+      const Vec6<S> br = detail::screwBracket(c.screws[std::size_t(b)], g);
       Q(a, b) = c.screws[std::size_t(a)].dot(c.tails[std::size_t(a)] * br);
       Q(b, a) = Q(a, b);
     }
@@ -447,7 +440,7 @@ PayloadTerms<S> SerialDynamics<S>::payloadTerms(const DynVector<S>& theta, const
     for (int j = 0; j < n; ++j) p.A(i, j) = c.screws[std::size_t(i)].dot(Np * c.screws[std::size_t(j)]);
     p.C(i) = -c.screws[std::size_t(i)].dot(Np * g);
   }
-  p.B = detail::coriolisFromTails<S>(c.screws, [&](int) -> const Mat6<S>& { return Np; }, GfPrinting::Corrected);
+  p.B = detail::coriolisFromTails<S>(c.screws, [&](int) -> const Mat6<S>& { return Np; });
   return p;
 }
 

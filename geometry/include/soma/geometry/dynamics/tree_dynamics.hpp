@@ -20,13 +20,6 @@
 
 namespace soma {
 
-/// Which version of the up/down pass of GF §14.1.3 to run (the printed ones only for erratum studies).
-enum class TreeRnePrinting {
-  Corrected,
-  ParentAngleInDownPass,       ///< erratum 2: P_i += Ad(−θ_i s_c⁰)ᵀ P_c (parent's angle, child's screw), line 8838
-  ParentVelocityForAcceleration  ///< erratum 3: q̈_i⁰ uses Ad(−θ_i s_i⁰) q̇_parent⁰ (a velocity), line 8824
-};
-
 template <class S> struct TreeConfiguration {
   std::vector<SE3<S>> placements;  ///< K_i = K_parent exp(θ_i s_i⁰) (GF §14.1.2)
   std::vector<Vec6<S>> screws;     ///< s_i(θ) = Ad(K_i) s_i⁰
@@ -69,9 +62,11 @@ template <class S> class TreeDynamics {
   DynVector<S> inverseDynamicsSpatial(const DynVector<S>& theta, const DynVector<S>& thetaDot,
                                       const DynVector<S>& thetaDDot) const;
   /// The recursive up/down pass of GF §14.1.3 (box at lines 8808–8844) in home coordinates
-  /// (corrected: errata 2, 3). GF-14.1.3-tree-recursive-dynamics
-  DynVector<S> inverseDynamics(const DynVector<S>& theta, const DynVector<S>& thetaDot, const DynVector<S>& thetaDDot,
-                               TreeRnePrinting printing = TreeRnePrinting::Corrected) const;
+  /// (corrected: errata 2, 3; the printed passes — the parent's angle in the down pass, line 8838,
+  /// and the parent's velocity for its acceleration, line 8824 — are computed in
+  /// studies/gf14/trees.cpp). GF-14.1.3-tree-recursive-dynamics
+  DynVector<S> inverseDynamics(const DynVector<S>& theta, const DynVector<S>& thetaDot,
+                               const DynVector<S>& thetaDDot) const;
   /// A_ij = s_iᵀ N̄_j s_j for i ⪯ j (N̄_j = Σ_{j⪯k} N_k), 0 for unrelated joints.
   DynMatrix<S> massMatrix(const TreeConfiguration<S>& c) const;
   DynMatrix<S> massMatrix(const DynVector<S>& theta) const { return massMatrix(configuration(theta)); }

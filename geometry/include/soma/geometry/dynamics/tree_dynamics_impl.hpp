@@ -131,7 +131,7 @@ DynVector<S> TreeDynamics<S>::inverseDynamicsSpatial(const DynVector<S>& theta, 
 // down pass P_i⁰ = Q_i⁰ + Σ_children c Ad(−θ_c s_c⁰)ᵀ P_c⁰,  τ_i = P_i⁰ᵀ s_i⁰.
 template <class S>
 DynVector<S> TreeDynamics<S>::inverseDynamics(const DynVector<S>& theta, const DynVector<S>& thetaDot,
-                                              const DynVector<S>& thetaDDot, TreeRnePrinting printing) const {
+                                              const DynVector<S>& thetaDDot) const {
   checkState(theta, "θ");
   checkState(thetaDot, "θ̇");
   checkState(thetaDDot, "θ̈");
@@ -146,8 +146,7 @@ DynVector<S> TreeDynamics<S>::inverseDynamics(const DynVector<S>& theta, const D
     const Vec6<S> vp = p < 0 ? Vec6<S>::Zero() : v[std::size_t(p)];
     const Vec6<S> ap = p < 0 ? ground : a[std::size_t(p)];
     v[k] = thetaDot(i) * s0_[k] + Hinv[k] * vp;
-    const Vec6<S> parentTerm = printing == TreeRnePrinting::ParentVelocityForAcceleration ? vp : ap;
-    a[k] = thetaDDot(i) * s0_[k] + thetaDot(i) * screwBracket(v[k], s0_[k]) + Hinv[k] * parentTerm;
+    a[k] = thetaDDot(i) * s0_[k] + thetaDot(i) * screwBracket(v[k], s0_[k]) + Hinv[k] * ap;
     const Vec6<S> h = N0_[k] * v[k];
     P[k] = N0_[k] * a[k] + coadjoint(SE3Tangent<S>(v[k]), h);
   }
@@ -155,13 +154,7 @@ DynVector<S> TreeDynamics<S>::inverseDynamics(const DynVector<S>& theta, const D
   const std::vector<int>& order = topology_.breadthFirst();
   for (auto it = order.rbegin(); it != order.rend(); ++it) {
     const std::size_t k = std::size_t(*it);
-    for (int c : topology_.children(*it)) {
-      const std::size_t kc = std::size_t(c);
-      const Mat6<S> X = printing == TreeRnePrinting::ParentAngleInDownPass
-                            ? Mat6<S>(SE3Tangent<S>(Vec6<S>(-theta(*it) * s0_[kc])).exp().adjoint())
-                            : Hinv[kc];
-      P[k] += X.transpose() * P[kc];
-    }
+    for (int c : topology_.children(*it)) P[k] += Hinv[std::size_t(c)].transpose() * P[std::size_t(c)];
     tau(*it) = P[k].dot(s0_[k]);
   }
   return tau;

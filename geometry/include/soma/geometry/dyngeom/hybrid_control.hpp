@@ -49,11 +49,11 @@ template <class S> Vec6<S> rigidBodyWrench(const Mat6<S>& N6, const Vec6<S>& V, 
 /// N₆II(V, V) = XXᵀN₆⁻¹(N₆∇_V V): the constraint wrench (p from n6Projectors). GF §15.4.4 line 10022
 template <class S>
 Vec6<S> secondFundamentalWrench(const HybridProjectors<S>& p, const Mat6<S>& N6, const Vec6<S>& V, const Vec6<S>& Vdot);
-/// λ_j = z_jᵀN₆V̇ + VᵀN₆[z_j, V] (j = n+1..6; corrected, erratum E15.9; AsPrinted: z_i with i
-/// the first constraint index n+1 for every j, the slip of line 10034). GF-15.4.4-constraint-multipliers
+/// λ_j = z_jᵀN₆V̇ + VᵀN₆[z_j, V] (j = n+1..6; corrected, erratum E15.9: line 10034 prints z_i with i
+/// the first constraint index n+1 for every j, computed in studies/gf15/hybrid.cpp).
+/// GF-15.4.4-constraint-multipliers
 template <class S>
-DgVector<S> constraintMultipliers(const HybridProjectors<S>& p, const Mat6<S>& N6, const Vec6<S>& V, const Vec6<S>& Vdot,
-                                  DgPrinting printing = DgPrinting::Corrected);
+DgVector<S> constraintMultipliers(const HybridProjectors<S>& p, const Mat6<S>& N6, const Vec6<S>& V, const Vec6<S>& Vdot);
 
 /// q̇_e = AAᵀN₆(q̇_d − q̇₆). GF §15.4.4 line 10045
 template <class S>
@@ -75,7 +75,7 @@ template <class S> DgVector<S> forceControlTorque(const HybridProjectors<S>& p, 
   extern template Vec6<S> secondFundamentalWrench<S>(const HybridProjectors<S>&, const Mat6<S>&, const Vec6<S>&, \
                                                      const Vec6<S>&);                                           \
   extern template DgVector<S> constraintMultipliers<S>(const HybridProjectors<S>&, const Mat6<S>&, const Vec6<S>&, \
-                                                       const Vec6<S>&, DgPrinting);                              \
+                                                       const Vec6<S>&);                                          \
   extern template Vec6<S> hybridVelocityError<S>(const HybridProjectors<S>&, const Mat6<S>&, const Vec6<S>&,     \
                                                  const Vec6<S>&);                                               \
   extern template Vec6<S> hybridAccelerationError<S>(const HybridProjectors<S>&, const Mat6<S>&, const Vec6<S>&, \

@@ -19,10 +19,6 @@ template <class S> using DgVector = Eigen::Matrix<S, Eigen::Dynamic, 1>;
 template <class S> using DgMatrix = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>;
 template <class S> using ScrewMatrix = Eigen::Matrix<S, 6, Eigen::Dynamic>;
 
-/// Which form of a formula: the corrected one or the book's printed statement (kept so studies
-/// can show the printed one failing). Same meaning as GfPrinting in dynamics/serial_dynamics.hpp.
-enum class DgPrinting { Corrected, AsPrinted };
-
 template <class S> class JointSpaceGeometry {
  public:
   /// n ≥ 1 home joint screws s_i(0) (any pitch, finite). InvalidInput for n = 0 or a NaN.
@@ -51,9 +47,9 @@ template <class S> class JointSpaceGeometry {
   DgMatrix<S> coScrews(const ScrewMatrix<S>& J) const;
 
   /// Γ[i](j, k) = Γ^i_jk = ½W_i([s_min(j,k), s_max(j,k)]) (0 for j = k): the book's case formula,
-  /// symmetric in j, k. AsPrinted: the "anti-symmetric" reading ½W_i([s_j, s_k]) for all j, k
-  /// (erratum E15.1). GF §15.1 line 9581, GF-15.1-joint-space-christoffel
-  std::vector<DgMatrix<S>> christoffelBook(const DgVector<S>& theta, DgPrinting printing = DgPrinting::Corrected) const;
+  /// symmetric in j, k (erratum E15.1: the book's "anti-symmetric" reading ½W_i([s_j, s_k]) for all
+  /// j, k is computed in studies/gf15/metric.cpp). GF §15.1 line 9581, GF-15.1-joint-space-christoffel
+  std::vector<DgMatrix<S>> christoffelBook(const DgVector<S>& theta) const;
   /// The Levi-Civita symbols Γ^i_jk = ½G^{il}(∂_jG_lk + ∂_kG_lj − ∂_lG_jk) of G = JᵀQ_pJ (analytic
   /// ∂G from the brackets). InvalidInput if G is singular (n ≠ 6, singular J, or α = 0).
   std::vector<DgMatrix<S>> christoffelLeviCivita(const DgVector<S>& theta) const;

@@ -64,10 +64,9 @@ template <class S> WrenchSet<S> frictionConeEdges(const Vec3<S>& point, const Ve
 /// γF sin θ, F), F ≥ 0, 0 ≤ γ ≤ μ. GF §12.6, GF-12.6-friction-cone
 template <class S> Wrench<S> standardFrictionWrench(const S& F, const S& gamma, const S& theta);
 /// Membership of the DUAL of the standard friction cone, corrected: ω arbitrary and
-/// v_z ≥ μ √(v_x² + v_y²). GF §12.6, GF-12.6-dual-friction-cone (corrected, erratum E12.2)
+/// v_z ≥ μ √(v_x² + v_y²). GF §12.6, GF-12.6-dual-friction-cone (corrected, erratum E12.2: the
+/// book's dual, only ω = 0 and |v_t| ≤ v_z/μ, is a strict subset; studies/gf12/grasp.cpp shows it)
 template <class S> bool inDualFrictionCone(const SE3Tangent<S>& s, const S& mu);
-/// The dual as printed: only ω = 0 and |v_t| ≤ v_z/μ. Kept to show it is a strict subset.
-template <class S> bool inDualFrictionConeAsPrinted(const SE3Tangent<S>& s, const S& mu);
 
 /// Planar wrench (moment about the origin, f_x, f_y) of a force f at p. GF §12.6
 template <class S> Vec3<S> planarWrench(const Vec2<S>& point, const Vec2<S>& force);

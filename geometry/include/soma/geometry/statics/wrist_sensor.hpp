@@ -23,10 +23,9 @@ template <class S> std::array<SensorGauge<S>, 8> wristSensorGauges(const S& l);
 template <class S> std::array<Wrench<S>, 8> wristSensorWrenches(const S& l, const Vec8<S>& w);
 
 /// Resolved force matrix, corrected: row 2 = (0, −l, 0, 0, 0, +l, 0, 0), the total l(w₆ − w₂).
-/// GF §12.3, GF-12.3-wrist-force-sensor (corrected, erratum E12.1)
+/// GF §12.3, GF-12.3-wrist-force-sensor (corrected, erratum E12.1: line 7410 prints −l at (2, 6);
+/// studies/gf12/statics.cpp shows that matrix failing)
 template <class S> Mat68<S> resolvedForceMatrix(const S& l);
-/// The matrix as printed on GF p. (line 7410), with −l at (2, 6). Kept only to show it fails.
-template <class S> Mat68<S> resolvedForceMatrixAsPrinted(const S& l);
 
 /// Gauge signals that produce the wrench 𝒲: the minimum-norm solution of A w = 𝒲 (A has rank 6
 /// for l > 0; 8 gauges, 2 redundant). InvalidInput for l ≤ 0 (rank 3: moments unmeasurable).

@@ -1,7 +1,7 @@
 #pragma once
 // Constraint varieties in Study parameters (GF §11.4–11.5): the sphere condition of an S–S leg
-// as a quadric of PR⁷, the book's printed forms of the S–S and Stewart-leg quadrics, and the
-// 3-plane of a 2R dyad.
+// as a quadric of PR⁷ and the 3-plane of a 2R dyad. The book's printed forms of the S–S and
+// Stewart-leg quadrics are evaluated literally in studies/gf11/study_quadric.cpp.
 #include "soma/algebra/study_parameters.hpp"
 
 namespace soma {
@@ -21,17 +21,6 @@ template <class S> Mat8<S> studyQuadricMatrix();
 /// xᵀ Q x / |x|² for Study coordinates x (0 on the quadric).
 template <class S> S quadricResidual(const Mat8<S>& Q, const Vec8<S>& x);
 
-/// The book's homogenised leg equation, evaluated literally with quaternions h₀ = a, h₁ = c:
-/// (|p|² + |q|² − L²) h₀h₀* + h₀ q h₀* p + p h₀ q h₀* + 2 h₀ q h₁* − 2 h₁ q h₀* + 2 p h₁ h₀*
-/// − 2 h₀ h₁* p + 4 h₁ h₁* (its scalar part; the vector part vanishes identically).
-/// GF §11.5.4, GF-11.5.4-stewart-leg-quadric (as printed)
-template <class S> Vec4<S> stewartLegExpressionAsPrinted(const Vec8<S>& x, const Vec3<S>& p, const Vec3<S>& q,
-                                                         const S& L);
-
-/// The book's extra quadric of the S–S link with the second joint at distance l on the z-axis:
-/// (c₀ − l a₃)c₀ + (c₁ + l a₂)c₁ + (c₂ − l a₁)c₂ + (c₃ + l a₀)c₃. GF §11.5.3, GF-11.5.3-SS-link-variety
-template <class S> S sphericalSphericalFormAsPrinted(const Vec8<S>& x, const S& l);
-
 /// The four linear equations of the 2R dyad (first axis z, second axis through (l, 0, 0) at
 /// twist angle α about x): l a₂ − c₃, l a₁ − c₀, l a₁ cos α − c₁ sin α, l a₂ cos α − c₂ sin α.
 /// GF §11.4, GF-11.4-2R-three-plane
@@ -41,8 +30,6 @@ template <class S> Eigen::Matrix<S, 4, 8> twoRevoluteEquations(const S& l, const
   extern template Mat8<S> sphereConstraintQuadric<S>(const Vec3<S>&, const Vec3<S>&, const S&); \
   extern template Mat8<S> studyQuadricMatrix<S>();                                              \
   extern template S quadricResidual<S>(const Mat8<S>&, const Vec8<S>&);                         \
-  extern template Vec4<S> stewartLegExpressionAsPrinted<S>(const Vec8<S>&, const Vec3<S>&, const Vec3<S>&, const S&); \
-  extern template S sphericalSphericalFormAsPrinted<S>(const Vec8<S>&, const S&);               \
   extern template Eigen::Matrix<S, 4, 8> twoRevoluteEquations<S>(const S&, const S&);
 SOMA_FOR_EACH_SCALAR(SOMA_CONSTRAINT_QUADRICS_EXTERN)
 #undef SOMA_CONSTRAINT_QUADRICS_EXTERN
