@@ -38,7 +38,7 @@
 #include <soma/geometry/cuspidal/workspace.hpp>
 #include <soma/geometry/cuspidal/workspace_analysis.hpp>
 #include <soma/geometry/dynamics/biped_dynamics.hpp>
-#include <soma/geometry/dynamics/cl062.hpp>
+#include <soma/geometry/dynamics/clifford_dynamics.hpp>
 #include <soma/geometry/dynamics/constrained_tree.hpp>
 #include <soma/geometry/dynamics/fourbar_dynamics.hpp>
 #include <soma/geometry/dynamics/free_body.hpp>
@@ -50,11 +50,6 @@
 #include <soma/geometry/dynamics/stewart_dynamics.hpp>
 #include <soma/geometry/dynamics/tree_dynamics.hpp>
 #include <soma/geometry/dynamics/tree_topology.hpp>
-#include <soma/geometry/dyngeom/geodesic_control.hpp>
-#include <soma/geometry/dyngeom/hybrid_control.hpp>
-#include <soma/geometry/dyngeom/invariant_metric.hpp>
-#include <soma/geometry/dyngeom/joint_space_geometry.hpp>
-#include <soma/geometry/dyngeom/mobility.hpp>
 #include <soma/geometry/lines/curvature_axes.hpp>
 #include <soma/geometry/lines/cylindroid.hpp>
 #include <soma/geometry/lines/grassmannian.hpp>
@@ -89,6 +84,11 @@
 #include <soma/geometry/planar/motion_jet.hpp>
 #include <soma/geometry/planar/polynomials.hpp>
 #include <soma/geometry/planar/taylor_series.hpp>
+#include <soma/geometry/riemannian/geodesic_control.hpp>
+#include <soma/geometry/riemannian/hybrid_control.hpp>
+#include <soma/geometry/riemannian/invariant_metric.hpp>
+#include <soma/geometry/riemannian/joint_space_geometry.hpp>
+#include <soma/geometry/riemannian/mobility.hpp>
 #include <soma/geometry/screws/identification.hpp>
 #include <soma/geometry/screws/screw_system.hpp>
 #include <soma/geometry/serial/closed_form_ik.hpp>

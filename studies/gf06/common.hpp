@@ -21,7 +21,7 @@ inline constexpr const char* kChapter9 = "GF 9 — Clifford algebra";
 
 using V3 = Eigen::Vector3d;
 using V6 = Vec6<double>;
-using L = Line<double>;
+using L = PluckerLine<double>;
 
 inline std::mt19937_64 rng(std::uint64_t seed = 66) { return std::mt19937_64(seed); }
 inline double uni(std::mt19937_64& g, double lo = -1, double hi = 1) {

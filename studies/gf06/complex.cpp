@@ -61,8 +61,8 @@ void complex4x4(Context& c) {
     correctedC = std::max(correctedC, residual(pointOn(Cc)));
     // soma's null plane of a finite point, and the null point of that plane.
     const V3 y = rv(g, -2, 2);
-    const Plane<double> pl = cc.nullPlane(y);
-    nullPlane = std::max(nullPlane, std::abs(pl.eval(y)) + cc.relativeResidual(cc.lineThrough(y, 1.0)));
+    const pga::Plane<double> pl = cc.nullPlane(y);
+    nullPlane = std::max(nullPlane, std::abs(pl.normal().dot(y) - pl.distance()) + cc.relativeResidual(cc.lineThrough(y, 1.0)));
     const Vec4<double> yh = cc.nullPoint(pl);
     polarity = std::max(polarity, (yh.tail<3>() / yh(0) - y).norm());
   }
@@ -75,7 +75,7 @@ void complex4x4(Context& c) {
   const LinearComplex<double> sing = LinearComplex<double>::singular(L::pointDirection(V3::Zero(), V3::UnitX()));
   c.checkNear("singular complex: det X = 0", 0.0, sing.matrix4().determinant(), 0.0);
   const LinearComplex<double> cz = LinearComplex<double>::fromAxisPitch(L::pointDirection(V3::Zero(), V3::UnitZ()), 0.5);
-  c.checkNear("plane x = 1 (parallel to the axis): null point at infinity (x₀ = 0)", 0.0, cz.nullPoint(Plane<double>{V3(1, 0, 0), -1}).x(), tolId());
+  c.checkNear("plane x = 1 (parallel to the axis): null point at infinity (x₀ = 0)", 0.0, cz.nullPoint(pga::Plane<double>(V3(1, 0, 0), 1)).x(), tolId());
 }
 
 // GF §6.6, GF-6.6-complex-symmetries (E6.1)
@@ -183,14 +183,14 @@ void grassmannEmbedding(Context& c) {
   c.checkEqual("number of relations for G(2,5)", 5, pluckerRelationsG2<double>(Eigen::VectorXd::Zero(10), 5).size());
   c.checkEqual("number of relations for G(2,6) (used in ch. 8)", 15, pluckerRelationsG2<double>(Eigen::VectorXd::Zero(15), 6).size());
   c.checkEqual("coordinates of G(3,6): C(6,3)", 20, static_cast<long long>(pluckerIndexSets(3, 6).size()));
-  // x ∧ y of the book's (x0..x3): same as Line::throughHomogeneousPoints.
+  // x ∧ y of the book's (x0..x3): same as PluckerLine::throughHomogeneousPoints.
   Vec4<double> x(1, 0.2, -0.4, 0.7), y(0.5, 1.1, 0.3, -0.2);
   Eigen::MatrixXd b(4, 2);
   b.col(0) = x;
   b.col(1) = y;
   const Eigen::VectorXd p = pluckerEmbedding<double>(b);
   const V6 s = six(V3(p(0), p(1), p(2)), V3(p(5), -p(4), p(3)));
-  c.checkResidual("x ∧ y = (x₀y₁ − x₁y₀, …; x₂y₃ − x₃y₂, …) = Line::throughHomogeneousPoints", (s - L::throughHomogeneousPoints(x, y).coords()).norm(), tolId());
+  c.checkResidual("x ∧ y = (x₀y₁ − x₁y₀, …; x₂y₃ − x₃y₂, …) = PluckerLine::throughHomogeneousPoints", (s - L::throughHomogeneousPoints(x, y).coords()).norm(), tolId());
 }
 
 // GF §6.8, GF-6.8-grassmannian-homogeneous (E6.7)

@@ -317,8 +317,8 @@ void complexFigure(Context& c) {
   // The null planes at points (ρ, 0, 0) tilt by atan(ρ/h) about the radius: check.
   double worst = 0;
   for (const double rho : {0.5, 1.0, 1.5}) {
-    const Plane<double> p = cc.nullPlane(V3(rho, 0, 0));
-    worst = std::max(worst, std::abs(std::atan2(std::hypot(p.n.x(), p.n.y()), p.n.z()) - std::atan2(rho, h)));
+    const V3 n = cc.nullPlane(V3(rho, 0, 0)).normal();
+    worst = std::max(worst, std::abs(std::atan2(std::hypot(n.x(), n.y()), n.z()) - std::atan2(rho, h)));
   }
   c.checkResidual("null plane at distance ρ from the axis is tilted by atan(ρ/h) from horizontal", worst, tolId(64));
   if (!c.makeFigures()) return;
@@ -336,7 +336,7 @@ void complexFigure(Context& c) {
   for (std::size_t i = 0; i < pts.size(); ++i) {
     const V3 y = pts[i];
     const rd::Color col = rd::palette::cycle(i);
-    const Plane<double> p = cc.nullPlane(y);
+    const V3 n = cc.nullPlane(y).normal().normalized();
     for (int k = 0; k < 10; ++k) {
       const L l = cc.lineThrough(y, pi<double>() * k / 10);
       const V3 d = l.unitDirection();
@@ -344,7 +344,7 @@ void complexFigure(Context& c) {
     }
     // The null plane as a translucent disc.
     rd::Mesh disc;
-    const V3 n = p.n.normalized(), e1 = n.unitOrthogonal(), e2 = n.cross(e1);
+    const V3 e1 = n.unitOrthogonal(), e2 = n.cross(e1);
     disc.v.push_back(y);
     for (int k = 0; k <= 40; ++k) {
       const double t = 2 * pi<double>() * k / 40;

@@ -385,14 +385,14 @@ void p1xp1(Context& c) {
 // skew lines (1, 1).
 MatX alphaPlane(const Vec3<S>& P, std::mt19937_64& g) {
   MatX m(6, 3);
-  for (int k = 0; k < 3; ++k) m.col(k) = Line<S>::throughPoints(P, Vec3<S>(P + vec3(g))).coords();
+  for (int k = 0; k < 3; ++k) m.col(k) = PluckerLine<S>::throughPoints(P, Vec3<S>(P + vec3(g))).coords();
   return m;
 }
 MatX betaPlane(const Vec3<S>& n, double dist, std::mt19937_64& g) {
   const Vec3<S> u = n.unitOrthogonal(), w = n.cross(u);
   auto pointIn = [&] { return Vec3<S>(dist * n + uni(g) * u + uni(g) * w); };
   MatX m(6, 3);
-  for (int k = 0; k < 3; ++k) m.col(k) = Line<S>::throughPoints(pointIn(), pointIn()).coords();
+  for (int k = 0; k < 3; ++k) m.col(k) = PluckerLine<S>::throughPoints(pointIn(), pointIn()).coords();
   return m;
 }
 /// Projective dimension of the intersection of two linear subspaces of P⁵ (columns span them).
@@ -412,14 +412,14 @@ void bezoutHalphen(Context& c) {
   // (1,1)·(1,1) = 2: the lines meeting four random lines. The four linear conditions ⟨ℓ, Lᵢ⟩ = 0
   // leave a pencil ℓ = x + s y in P⁵; the Klein quadric on it is a quadratic in s: 2 solutions.
   MatX L(4, 6);
-  std::vector<Line<S>> lines;
+  std::vector<PluckerLine<S>> lines;
   // The four lines all meet a chosen line ℓ₀, so that the instance has real transversals (ℓ₀ and
   // a second one: complex roots come in pairs).
   const Vec3<S> q0 = vec3(g), q1 = vec3(g);
-  const Line<S> l0 = Line<S>::throughPoints(q0, q1);
+  const PluckerLine<S> l0 = PluckerLine<S>::throughPoints(q0, q1);
   for (int i = 0; i < 4; ++i) {
     const double u = uni(g, -2, 2);
-    lines.push_back(Line<S>::throughPoints(Vec3<S>(q0 + u * (q1 - q0)), vec3(g)));
+    lines.push_back(PluckerLine<S>::throughPoints(Vec3<S>(q0 + u * (q1 - q0)), vec3(g)));
     const Vec6<S> s = lines.back().coords();
     L.row(i) << s.tail<3>().transpose(), s.head<3>().transpose();  // ⟨ℓ, s⟩ = ω·v_s + v·ω_s
   }

@@ -79,8 +79,8 @@ template <class S, class F> S diff8(F&& f, const S& d) {
 }
 
 /// The invented Grashof crank–rocker of checks/fourbar_check.py: d = (1, 2.2, 1.8, 2.5).
-inline FourBar<double> crankRocker(double d2 = 2.2) {
-  return FourBar<double>(1.0, d2, 1.8, 2.5,
+inline FourBarDynamics<double> crankRocker(double d2 = 2.2) {
+  return FourBarDynamics<double>(1.0, d2, 1.8, 2.5,
                          {PlanarLink<double>{1.0, 0.5, 0.1, 0.1}, PlanarLink<double>{2.0, 1.0, -0.2, 0.8},
                           PlanarLink<double>{1.5, 0.9, 0.15, 0.45}});
 }

@@ -253,7 +253,7 @@ void penRobot(Context& ctx) {
 }
 
 void freedomVectors(Context& ctx) {
-  const FourBar<double> fb = crankRocker();
+  const FourBarDynamics<double> fb = crankRocker();
   const ConstrainedTree<double> m4 = fb.constrainedTree(0.3);
   const PlanarBiped<double> bp(bipedParameters(), bipedHome());
   const ConstrainedTree<double> ms = stewartExample(false).model(stewartPose());
@@ -267,7 +267,7 @@ void freedomVectors(Context& ctx) {
 }
 
 void parallelEquations(Context& ctx) {
-  const FourBar<double> fb = crankRocker();
+  const FourBarDynamics<double> fb = crankRocker();
   const ConstrainedTree<double> m = fb.constrainedTree(0.3);
   DM B = DM::Zero(3, 1);
   B(0, 0) = 1;
@@ -284,7 +284,7 @@ void parallelEquations(Context& ctx) {
 }
 
 void constraintMagnitude(Context& ctx) {
-  const FourBar<double> fb = crankRocker();
+  const FourBarDynamics<double> fb = crankRocker();
   const ConstrainedTree<double> m = fb.constrainedTree(0.3);
   const auto st = fb.treeState(0.3, fb.motion(1.4, -0.8, 2.0));
   DV tau = DV::Zero(3);

@@ -17,7 +17,7 @@ V6 sv(double a, double b, double c, double d, double e, double f) { return (V6()
 
 /// The 4-bar null vector with the printed first entry α₁ = d₁d₄ sin θ₂ − d₂d₄ sin(θ₁+θ₂).
 // GF §14.4 line 9177 as printed (erratum 8)
-Eigen::Vector4d alphaAsPrinted(const FourBar<double>& fb, const FourBarPosture<double>& p) {
+Eigen::Vector4d alphaAsPrinted(const FourBarDynamics<double>& fb, const FourBarPosture<double>& p) {
   const auto& d = fb.lengths();
   Eigen::Vector4d a = fb.alpha(p);
   a(0) = d[0] * d[3] * std::sin(p.theta2) - d[1] * d[3] * std::sin(p.theta1 + p.theta2);
@@ -26,7 +26,7 @@ Eigen::Vector4d alphaAsPrinted(const FourBar<double>& fb, const FourBarPosture<d
 
 /// α₁τ = q̈₁ᵀN₁α₁s₁ + q̈₂ᵀN₂(α₁s₁ + α₂s₂) − q̈₃ᵀN₃α₄s₄ solved for τ, with the printed α.
 // GF §14.4 line 9195 with the α of line 9177 as printed (erratum 8)
-double torqueAlphaAsPrinted(const FourBar<double>& fb, double theta1, double theta1Dot, double theta1DDot) {
+double torqueAlphaAsPrinted(const FourBarDynamics<double>& fb, double theta1, double theta1Dot, double theta1DDot) {
   const FourBarMotion<double> m = fb.motion(theta1, theta1Dot, theta1DDot);
   const auto s = fb.screws(m.posture);
   const Eigen::Vector4d a = alphaAsPrinted(fb, m.posture);
@@ -38,7 +38,7 @@ double torqueAlphaAsPrinted(const FourBar<double>& fb, double theta1, double the
 
 /// The s₁-paired root equation (left side) with the printed +θ̈₄s₁ᵀN₃s₄ (from q̇₃ = +θ̇₄s₄, line 9159).
 // GF §14.4 line 9203 as printed (erratum 9)
-double shakingMomentLhsAsPrinted(const FourBar<double>& fb, double theta1, double theta1Dot, double theta1DDot) {
+double shakingMomentLhsAsPrinted(const FourBarDynamics<double>& fb, double theta1, double theta1Dot, double theta1DDot) {
   const FourBarMotion<double> m = fb.motion(theta1, theta1Dot, theta1DDot);
   const auto s = fb.screws(m.posture);
   const PMat<double>&N1 = m.inertia[0], &N2 = m.inertia[1], &N3 = m.inertia[2];
@@ -78,7 +78,7 @@ void planarInertiaStudy(Context& ctx) {
 }
 
 void nullVector(Context& ctx) {
-  const FourBar<double> fb = crankRocker();
+  const FourBarDynamics<double> fb = crankRocker();
   double fix = 0, prRes = 0, prPred = 0;
   for (int k = 0; k < 12; ++k) {
     const FourBarPosture<double> p = fb.posture(0.1 + k * 0.5);
@@ -92,13 +92,13 @@ void nullVector(Context& ctx) {
   ctx.checkResidual("α₁s₁ + α₂s₂ + α₃s₃ + α₄s₄ = 0 with α₁ = d₁d₂ sin θ₂ − d₂d₄ sin(θ₁+θ₂) (12 postures)", fix, 1e-14);
   ctx.checkPrintedFails("α₁ = d₁d₄ sin θ₂ − d₂d₄ sin(θ₁+θ₂) (line 9177)", "8", prRes, 1e-6);
   ctx.checkResidual("printed residual = (d₁(d₄ − d₂) sin θ₂, 0, 0) exactly", prPred, 1e-14);
-  const FourBar<double> eq = crankRocker(2.5);  // d₂ = d₄: the printed formula happens to be right
+  const FourBarDynamics<double> eq = crankRocker(2.5);  // d₂ = d₄: the printed formula happens to be right
   const FourBarPosture<double> p = eq.posture(1.0);
   ctx.checkResidual("extreme d₂ = d₄: printed α = corrected α", (eq.alpha(p) - alphaAsPrinted(eq, p)).cwiseAbs().maxCoeff(), 1e-15);
 }
 
 void fourBarEom(Context& ctx) {
-  const FourBar<double> fb = crankRocker();
+  const FourBarDynamics<double> fb = crankRocker();
   const ConstrainedTree<double> m = fb.constrainedTree(0.3);
   DM B = DM::Zero(3, 1);
   B(0, 0) = 1;
@@ -109,7 +109,7 @@ void fourBarEom(Context& ctx) {
     const auto st = fb.treeState(0.3, fb.motion(x[0], x[1], x[2]));
     eMul = std::max(eMul, std::abs(m.inverseDynamicsMultipliers(st[0], st[1], st[2], B).actuators(0) - tau));
     const Q t1 = x[0], t1d = x[1], t1dd = x[2];
-    const FourBar<Q> fq(Q(1), Q(22) / 10, Q(18) / 10, Q(25) / 10,
+    const FourBarDynamics<Q> fq(Q(1), Q(22) / 10, Q(18) / 10, Q(25) / 10,
                         {PlanarLink<Q>{1, Q(1) / 2, Q(1) / 10, Q(1) / 10}, PlanarLink<Q>{2, 1, Q(-2) / 10, Q(8) / 10},
                          PlanarLink<Q>{Q(3) / 2, Q(9) / 10, Q(15) / 100, Q(45) / 100}});
     const Q dE = diff8<Q>([&](const Q& s) { return fq.kineticEnergy(t1 + t1d * s + t1dd * s * s / 2, t1d + t1dd * s); }, Q(1) / 512);
@@ -166,7 +166,7 @@ void fourBarEom(Context& ctx) {
 }
 
 void shakingMoment(Context& ctx) {
-  const FourBar<double> fb = crankRocker();
+  const FourBarDynamics<double> fb = crankRocker();
   const ConstrainedTree<double> m = fb.constrainedTree(0.3);
   double eFix = 0, ePr = 0, sc = 0;
   for (double t1 : {0.3, 1.4, 2.6, 4.0, 5.5}) {
@@ -472,7 +472,7 @@ void stewartAlgorithm(Context& ctx) {
 
 // ---------------------------------------------------------------------------------------------
 void figure142(Context& ctx) {
-  const FourBar<double> fb = crankRocker();
+  const FourBarDynamics<double> fb = crankRocker();
   const FourBarPosture<double> p = fb.posture(1.0);
   ctx.checkResidual("drawn posture closes: |P₃ − P₄| = d₃", std::abs((p.joints[2] - p.joints[3]).norm() - 1.8), 1e-14);
   if (!ctx.makeFigures()) return;

@@ -2,11 +2,11 @@
 // Shared helpers for the GF chapter 15 studies (double): random screws and robots with fixed seeds,
 // finite differences, and the "printed formula fails" record.
 #include "soma/geometry/dynamics/serial_dynamics.hpp"
-#include "soma/geometry/dyngeom/geodesic_control.hpp"
-#include "soma/geometry/dyngeom/hybrid_control.hpp"
-#include "soma/geometry/dyngeom/invariant_metric.hpp"
-#include "soma/geometry/dyngeom/joint_space_geometry.hpp"
-#include "soma/geometry/dyngeom/mobility.hpp"
+#include "soma/geometry/riemannian/geodesic_control.hpp"
+#include "soma/geometry/riemannian/hybrid_control.hpp"
+#include "soma/geometry/riemannian/invariant_metric.hpp"
+#include "soma/geometry/riemannian/joint_space_geometry.hpp"
+#include "soma/geometry/riemannian/mobility.hpp"
 #include "soma/algebra/small_linalg.hpp"
 #include "soma/studies/study.hpp"
 

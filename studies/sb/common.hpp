@@ -2,7 +2,7 @@
 // Helpers shared by the SB studies (sb_*.cpp): fixed-seed draws, SB's printed elements built
 // literally (products of generators, in the order SB writes them), and small independent
 // references (point-mass bodies). Nothing here is library code.
-#include "soma/geometry/dynamics/cl062.hpp"
+#include "soma/geometry/dynamics/clifford_dynamics.hpp"
 #include "soma/geometry/dynamics/free_body.hpp"
 #include "soma/geometry/dynamics/spatial_inertia.hpp"
 #include "soma/studies/study.hpp"
@@ -14,7 +14,7 @@
 namespace soma::studies::sb {
 
 inline constexpr const char* kChapter = "SB — Rigid body dynamics in Cl(0,6,2)";
-namespace c6 = soma::cl062;
+namespace c6 = soma::clifford_dynamics;
 using D = c6::Dense<double>;
 using Biv = c6::Bivector<double>;
 using Quad = c6::Quadvector<double>;

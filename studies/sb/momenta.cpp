@@ -7,7 +7,7 @@
 
 namespace soma::studies::sb::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
-using namespace soma::cl062;
+using namespace soma::clifford_dynamics;
 
 // ---------------------------------------------------------------- §5: co-screws, Q0, inertias
 void coScrewBar(Context& c) {

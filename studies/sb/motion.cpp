@@ -12,7 +12,7 @@
 
 namespace soma::studies::sb::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
-using namespace soma::cl062;
+using namespace soma::clifford_dynamics;
 
 void coadjointAction(Context& c) {
   auto g = rng(601);
@@ -69,13 +69,13 @@ template <class S> Flight fly(bool useClifford, int n, double T, bool keepSeries
   const SpatialInertia<S> body(S(2), Vec3<S>(S(3) / S(10), S(-2) / S(10), S(1) / S(10)),
                                Mat3<S>(Vec3<S>(S(1), S(2), S(3)).asDiagonal()));
   const SE3Tangent<S> s0(Vec3<S>(S(1) / S(10), S(2), S(1) / S(10)), Vec3<S>(S(1) / S(2), S(0), S(-1) / S(4)));
-  const cl062::Quadvector<S> N0 = useClifford ? inertiaElement(body.matrix()) : cl062::Quadvector<S>();
+  const clifford_dynamics::Quadvector<S> N0 = useClifford ? inertiaElement(body.matrix()) : clifford_dynamics::Quadvector<S>();
   auto acc6 = [&](const SE3<S>& x, const SE3Tangent<S>& s) {
     return rigidBodyAcceleration(coadjointTransform(x, body.matrix()), s, Vec6<S>(Vec6<S>::Zero()));
   };
   auto accC = [&](const SE3<S>& x, const SE3Tangent<S>& s) {
     const auto N = actInertia(motorElement(x), N0);
-    return screwOf(cl062::rigidBodyAcceleration(N, screwElement(s), cl062::Bivector<S>()).sdot);
+    return screwOf(clifford_dynamics::rigidBodyAcceleration(N, screwElement(s), clifford_dynamics::Bivector<S>()).sdot);
   };
   // energy and momentum measured in the formulation that is integrated
   auto measure = [&](const RigidBodyState<S>& y, S& E, Vec6<S>& P) {
@@ -228,7 +228,7 @@ void eForm(Context& c) {
     const auto lhs = eFormLeft(N, screwElement(s), screwElement(sd));
     eForm = std::max(eForm, mx(lhs.template grade<6>() - eFormRight(coScrewElement(W))) / mxm(N6));
     eGrades = std::max(eGrades, (mx(lhs.template grade<4>()) + mx(lhs.template grade<8>())) / mxm(N6));
-    const auto acc = cl062::rigidBodyAcceleration(N, screwElement(s), coScrewElement(W));
+    const auto acc = clifford_dynamics::rigidBodyAcceleration(N, screwElement(s), coScrewElement(W));
     eSolve = std::max(eSolve, mxm(V6(screwOf(acc.sdot).coeffs() - sd.coeffs())));
     eRes = std::max(eRes, acc.residual / mxm(N6));
   }

@@ -8,7 +8,7 @@
 
 namespace soma::studies::sb::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
-using namespace soma::cl062;
+using namespace soma::clifford_dynamics;
 
 // ---------------------------------------------------------------- §2: 6×6 screw theory
 void screwsCoScrews(Context& c) {

@@ -21,24 +21,24 @@ template <class S> PVec<S> solve3(const PMat<S>& A, const PVec<S>& b) {
 }  // namespace
 
 template <class S>
-FourBar<S>::FourBar(S d1, S d2, S d3, S d4, std::array<PlanarLink<S>, 3> links, int branch)
+FourBarDynamics<S>::FourBarDynamics(S d1, S d2, S d3, S d4, std::array<PlanarLink<S>, 3> links, int branch)
     : d_{d1, d2, d3, d4}, links_(links), branch_(branch >= 0 ? 1 : -1) {
   for (int i = 0; i < 4; ++i)
     if (!isFinite(d_[std::size_t(i)]) || !(d_[std::size_t(i)] > S(0)))
-      throw InvalidInput("FourBar: length d" + std::to_string(i + 1) + " = " + toString(d_[std::size_t(i)]) + " is not positive");
+      throw InvalidInput("FourBarDynamics: length d" + std::to_string(i + 1) + " = " + toString(d_[std::size_t(i)]) + " is not positive");
   for (int i = 0; i < 3; ++i) {
     const PlanarLink<S>& l = links_[std::size_t(i)];
     if (!isFinite(l.mass) || !(l.mass > S(0)) || !isFinite(l.inertia) || !(l.inertia > S(0)) || !isFinite(l.along) || !isFinite(l.normal))
-      throw InvalidInput("FourBar: link " + std::to_string(i + 1) + " needs a positive mass and inertia and a finite centre");
+      throw InvalidInput("FourBarDynamics: link " + std::to_string(i + 1) + " needs a positive mass and inertia and a finite centre");
   }
 }
 
-template <class S> FourBarPosture<S> FourBar<S>::posture(const S& theta1) const {
+template <class S> FourBarPosture<S> FourBarDynamics<S>::posture(const S& theta1) const {
   using std::atan2;
   using std::cos;
   using std::sin;
   using std::sqrt;
-  if (!isFinite(theta1)) throw InvalidInput("FourBar::posture: θ₁ is not finite");
+  if (!isFinite(theta1)) throw InvalidInput("FourBarDynamics::posture: θ₁ is not finite");
   FourBarPosture<S> p;
   using P2 = Eigen::Matrix<S, 2, 1>;
   p.joints[0] = P2(S(0), S(0));
@@ -50,7 +50,7 @@ template <class S> FourBarPosture<S> FourBar<S>::posture(const S& theta1) const 
   S h2 = d_[1] * d_[1] - a * a;
   const S tol = Tolerance<S>::input() * d_[1] * d_[1];
   if (h2 < -tol)
-    throw InvalidInput("FourBar::posture: the loop cannot close at θ₁ = " + toString(theta1) + " (|P₂P₄| = " + toString(L) +
+    throw InvalidInput("FourBarDynamics::posture: the loop cannot close at θ₁ = " + toString(theta1) + " (|P₂P₄| = " + toString(L) +
                        " outside [|d₂ − d₃|, d₂ + d₃])");
   if (h2 < S(0)) h2 = S(0);
   const S h = sqrt(h2);
@@ -65,14 +65,14 @@ template <class S> FourBarPosture<S> FourBar<S>::posture(const S& theta1) const 
   return p;
 }
 
-template <class S> std::array<PVec<S>, 4> FourBar<S>::screws(const FourBarPosture<S>& p) const {
+template <class S> std::array<PVec<S>, 4> FourBarDynamics<S>::screws(const FourBarPosture<S>& p) const {
   std::array<PVec<S>, 4> s;
   for (std::size_t i = 0; i < 4; ++i) s[i] = planarJointScrew<S>(p.joints[i](0), p.joints[i](1));
   return s;
 }
 
 // GF §14.4 lines 9171–9181, GF-14.4-four-bar-null-vector (corrected, erratum 8)
-template <class S> Eigen::Matrix<S, 4, 1> FourBar<S>::alpha(const FourBarPosture<S>& p) const {
+template <class S> Eigen::Matrix<S, 4, 1> FourBarDynamics<S>::alpha(const FourBarPosture<S>& p) const {
   using std::sin;
   const S d1 = d_[0], d2 = d_[1], d4 = d_[3], t1 = p.theta1, t2 = p.theta2;
   Eigen::Matrix<S, 4, 1> a;
@@ -83,20 +83,20 @@ template <class S> Eigen::Matrix<S, 4, 1> FourBar<S>::alpha(const FourBarPosture
   return a;
 }
 
-template <class S> S FourBar<S>::singularityMeasure(const FourBarPosture<S>& p) const {
+template <class S> S FourBarDynamics<S>::singularityMeasure(const FourBarPosture<S>& p) const {
   using std::abs;
   return abs(alpha(p)(0)) / (d_[0] * d_[1] * d_[3]);
 }
 
-template <class S> FourBarMotion<S> FourBar<S>::motion(const S& theta1, const S& theta1Dot, const S& theta1DDot) const {
+template <class S> FourBarMotion<S> FourBarDynamics<S>::motion(const S& theta1, const S& theta1Dot, const S& theta1DDot) const {
   using std::cos;
   using std::sin;
-  if (!isFinite(theta1Dot) || !isFinite(theta1DDot)) throw InvalidInput("FourBar::motion: θ̇₁ or θ̈₁ is not finite");
+  if (!isFinite(theta1Dot) || !isFinite(theta1DDot)) throw InvalidInput("FourBarDynamics::motion: θ̇₁ or θ̈₁ is not finite");
   FourBarMotion<S> m;
   m.posture = posture(theta1);
   const FourBarPosture<S>& p = m.posture;
   if (!(singularityMeasure(p) > Tolerance<S>::input()))
-    throw InvalidInput("FourBar::motion: singular posture at θ₁ = " + toString(theta1) +
+    throw InvalidInput("FourBarDynamics::motion: singular posture at θ₁ = " + toString(theta1) +
                        " (α₁ = 0: coupler and rocker aligned, the crank cannot drive the loop)");
   const std::array<PVec<S>, 4> s = screws(p);
   const Eigen::Matrix<S, 4, 1> al = alpha(p);
@@ -129,7 +129,7 @@ template <class S> FourBarMotion<S> FourBar<S>::motion(const S& theta1, const S&
 }
 
 // GF §14.4 line 9195, GF-14.4-four-bar-eom (corrected α, erratum 8)
-template <class S> S FourBar<S>::torqueAlpha(const S& theta1, const S& theta1Dot, const S& theta1DDot) const {
+template <class S> S FourBarDynamics<S>::torqueAlpha(const S& theta1, const S& theta1Dot, const S& theta1DDot) const {
   const FourBarMotion<S> m = motion(theta1, theta1Dot, theta1DDot);
   const std::array<PVec<S>, 4> s = screws(m.posture);
   const Eigen::Matrix<S, 4, 1> a = alpha(m.posture);
@@ -139,7 +139,7 @@ template <class S> S FourBar<S>::torqueAlpha(const S& theta1, const S& theta1Dot
   return lhs / a(0);
 }
 
-template <class S> S FourBar<S>::kineticEnergy(const S& theta1, const S& theta1Dot) const {
+template <class S> S FourBarDynamics<S>::kineticEnergy(const S& theta1, const S& theta1Dot) const {
   const FourBarMotion<S> m = motion(theta1, theta1Dot, S(0));
   S e(0);
   for (std::size_t i = 0; i < 3; ++i) e += m.twist[i].dot(m.inertia[i] * m.twist[i]);
@@ -148,7 +148,7 @@ template <class S> S FourBar<S>::kineticEnergy(const S& theta1, const S& theta1D
 
 // GF §14.4 lines 9199–9203, GF-14.4-four-bar-shaking-moment (corrected sign of the θ̈₄ term, erratum 9)
 template <class S>
-S FourBar<S>::shakingMomentLhs(const S& theta1, const S& theta1Dot, const S& theta1DDot) const {
+S FourBarDynamics<S>::shakingMomentLhs(const S& theta1, const S& theta1Dot, const S& theta1DDot) const {
   const FourBarMotion<S> m = motion(theta1, theta1Dot, theta1DDot);
   const std::array<PVec<S>, 4> s = screws(m.posture);
   const PMat<S>&N1 = m.inertia[0], &N2 = m.inertia[1], &N3 = m.inertia[2];
@@ -158,12 +158,12 @@ S FourBar<S>::shakingMomentLhs(const S& theta1, const S& theta1Dot, const S& the
          S(2) * t1d * t2d * s[0].dot(N2 * b12) + t2d * t2d * s[1].dot(N2 * b12) + t4d * t4d * s[3].dot(N3 * b14);
 }
 
-template <class S> S FourBar<S>::crankAcceleration(const S& theta1, const S& theta1Dot, const S& tau) const {
+template <class S> S FourBarDynamics<S>::crankAcceleration(const S& theta1, const S& theta1Dot, const S& tau) const {
   const S t0 = torqueAlpha(theta1, theta1Dot, S(0)), t1 = torqueAlpha(theta1, theta1Dot, S(1));
   return (tau - t0) / (t1 - t0);
 }
 
-template <class S> std::array<S, 2> FourBar<S>::rk4Step(const std::array<S, 2>& y, const S& h, const S& tau) const {
+template <class S> std::array<S, 2> FourBarDynamics<S>::rk4Step(const std::array<S, 2>& y, const S& h, const S& tau) const {
   const S half = h / S(2);
   const S a1 = crankAcceleration(y[0], y[1], tau);
   const S a2 = crankAcceleration(y[0] + half * y[1], y[1] + half * a1, tau);
@@ -173,7 +173,7 @@ template <class S> std::array<S, 2> FourBar<S>::rk4Step(const std::array<S, 2>& 
   return {y[0] + h / S(6) * (y[1] + S(2) * v2 + S(2) * v3 + v4), y[1] + h / S(6) * (a1 + S(2) * a2 + S(2) * a3 + a4)};
 }
 
-template <class S> ConstrainedTree<S> FourBar<S>::constrainedTree(const S& homeTheta1) const {
+template <class S> ConstrainedTree<S> FourBarDynamics<S>::constrainedTree(const S& homeTheta1) const {
   using std::cos;
   using std::sin;
   const FourBarPosture<S> p = posture(homeTheta1);
@@ -196,7 +196,7 @@ template <class S> ConstrainedTree<S> FourBar<S>::constrainedTree(const S& homeT
   return ConstrainedTree<S>(TreeDynamics<S>(TreeTopology({-1, 0, -1}), screws, inertias, Vec3<S>::Zero()), cons);
 }
 
-template <class S> std::array<DynVector<S>, 3> FourBar<S>::treeState(const S& homeTheta1, const FourBarMotion<S>& m) const {
+template <class S> std::array<DynVector<S>, 3> FourBarDynamics<S>::treeState(const S& homeTheta1, const FourBarMotion<S>& m) const {
   const FourBarPosture<S> h = posture(homeTheta1);
   const FourBarPosture<S>& p = m.posture;
   DynVector<S> th(3), thd(3), thdd(3);
@@ -206,6 +206,6 @@ template <class S> std::array<DynVector<S>, 3> FourBar<S>::treeState(const S& ho
   return {th, thd, thdd};
 }
 
-#define SOMA_INSTANTIATE_FOURBAR_DYNAMICS(S) template class FourBar<S>;
+#define SOMA_INSTANTIATE_FOURBAR_DYNAMICS(S) template class FourBarDynamics<S>;
 
 }  // namespace soma

@@ -4,9 +4,9 @@
 
 namespace soma {
 #define SOMA_INSTANTIATE_LINE(S)                                          \
-  template class Line<S>;                                                 \
-  template LineRelation<S> relation<S>(const Line<S>&, const Line<S>&);   \
-  template S distance<S>(const Line<S>&, const Line<S>&);                 \
-  template S angle<S>(const Line<S>&, const Line<S>&);                    \
-  template bool meet<S>(const Line<S>&, const Line<S>&, const S&);
+  template class PluckerLine<S>;                                                 \
+  template LineRelation<S> relation<S>(const PluckerLine<S>&, const PluckerLine<S>&);   \
+  template S distance<S>(const PluckerLine<S>&, const PluckerLine<S>&);                 \
+  template S angle<S>(const PluckerLine<S>&, const PluckerLine<S>&);                    \
+  template bool meet<S>(const PluckerLine<S>&, const PluckerLine<S>&, const S&);
 }  // namespace soma

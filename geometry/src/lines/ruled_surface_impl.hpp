@@ -5,6 +5,6 @@
 namespace soma {
 #define SOMA_INSTANTIATE_RULED_SURFACE(S)                                          \
   template class RuledSurface<S>;                                          \
-  template DualNumber<S> dualAngle<S>(const Line<S>&, const Line<S>&);     \
-  template Line<S> commonPerpendicularDual<S>(const Line<S>&, const Line<S>&);
+  template DualNumber<S> dualAngle<S>(const PluckerLine<S>&, const PluckerLine<S>&);     \
+  template PluckerLine<S> commonPerpendicularDual<S>(const PluckerLine<S>&, const PluckerLine<S>&);
 }  // namespace soma

@@ -6,5 +6,5 @@ namespace soma {
 #define SOMA_INSTANTIATE_SCREW_AXIS(S)                            \
   template S screwPitch<S>(const Vec6<S>&);                       \
   template ScrewAxis<S> screwAxis<S>(const Vec6<S>&);             \
-  template Vec6<S> screwFromAxis<S>(const Line<S>&, const S&, const S&);
+  template Vec6<S> screwFromAxis<S>(const PluckerLine<S>&, const S&, const S&);
 }  // namespace soma

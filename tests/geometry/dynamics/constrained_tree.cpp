@@ -37,11 +37,11 @@ template <class S> S relErr(const DynVector<S>& a, const DynVector<S>& b) {
   return (a - b).cwiseAbs().maxCoeff() / (S(1) + b.cwiseAbs().maxCoeff());
 }
 
-template <class S> FourBar<S> crankRocker() {  // the invented Grashof crank–rocker of fourbar_check.py
+template <class S> FourBarDynamics<S> crankRocker() {  // the invented Grashof crank–rocker of fourbar_check.py
   const std::array<PlanarLink<S>, 3> links{PlanarLink<S>{S(1), S(1) / S(2), S(1) / S(10), S(1) / S(10)},
                                            PlanarLink<S>{S(2), S(1), S(-1) / S(5), S(4) / S(5)},
                                            PlanarLink<S>{S(3) / S(2), S(9) / S(10), S(3) / S(20), S(9) / S(20)}};
-  return FourBar<S>(S(1), S(11) / S(5), S(9) / S(5), S(5) / S(2), links);
+  return FourBarDynamics<S>(S(1), S(11) / S(5), S(9) / S(5), S(5) / S(2), links);
 }
 
 // GF §14.1.3 box, lines 8824 and 8838 as printed (errata 2, 3): the up/down pass in home coordinates
@@ -80,7 +80,7 @@ DynVector<S> treePassAsPrinted(const TreeDynamics<S>& t, const DynVector<S>& th,
 }
 
 // GF §14.4 line 9177 as printed (erratum 8): α₁ = d₁d₄ sin θ₂ − d₂d₄ sin(θ₁+θ₂)
-template <class S> Eigen::Matrix<S, 4, 1> alphaAsPrinted(const FourBar<S>& fb, const FourBarPosture<S>& p) {
+template <class S> Eigen::Matrix<S, 4, 1> alphaAsPrinted(const FourBarDynamics<S>& fb, const FourBarPosture<S>& p) {
   using std::sin;
   const auto& d = fb.lengths();
   Eigen::Matrix<S, 4, 1> a = fb.alpha(p);
@@ -88,7 +88,7 @@ template <class S> Eigen::Matrix<S, 4, 1> alphaAsPrinted(const FourBar<S>& fb, c
   return a;
 }
 // GF §14.4 line 9195 with the printed α (erratum 8): α₁τ = q̈₁ᵀN₁α₁s₁ + q̈₂ᵀN₂(α₁s₁ + α₂s₂) − q̈₃ᵀN₃α₄s₄
-template <class S> S torqueAlphaAsPrinted(const FourBar<S>& fb, const S& t1, const S& t1d, const S& t1dd) {
+template <class S> S torqueAlphaAsPrinted(const FourBarDynamics<S>& fb, const S& t1, const S& t1d, const S& t1dd) {
   const FourBarMotion<S> m = fb.motion(t1, t1d, t1dd);
   const auto s = fb.screws(m.posture);
   const Eigen::Matrix<S, 4, 1> a = alphaAsPrinted(fb, m.posture);
@@ -192,7 +192,7 @@ TEMPLATE_TEST_CASE("tree: massless intermediate links (a ball joint as three rev
 TEMPLATE_TEST_CASE("4-bar: corrected α annihilates the loop screws, the printed α does not (erratum 8)", "[constrained][fourbar]",
                    SOMA_TEST_SCALARS) {
   using S = TestType;
-  const FourBar<S> fb = crankRocker<S>();
+  const FourBarDynamics<S> fb = crankRocker<S>();
   for (int k = 0; k < 8; ++k) {
     const FourBarPosture<S> p = fb.posture(S(k) * S(3) / S(4) + S(1) / S(10));
     const auto s = fb.screws(p);
@@ -210,7 +210,7 @@ TEMPLATE_TEST_CASE("4-bar: corrected α annihilates the loop screws, the printed
 TEMPLATE_TEST_CASE("4-bar torque: α-equation = Lagrange multipliers (3-D constrained tree) = printed α fails", "[constrained][fourbar]",
                    float, double, long double, __float128) {
   using S = TestType;
-  const FourBar<S> fb = crankRocker<S>();
+  const FourBarDynamics<S> fb = crankRocker<S>();
   const S home = S(3) / S(10);
   const ConstrainedTree<S> model = fb.constrainedTree(home);
   DynMatrix<S> B = DynMatrix<S>::Zero(3, 1);
@@ -243,7 +243,7 @@ TEMPLATE_TEST_CASE("4-bar torque: α-equation = Lagrange multipliers (3-D constr
 
 TEST_CASE("4-bar torque = virtual work (power balance τθ̇₁ = dE_K/dt, 8th-order differences in __float128)", "[constrained][fourbar]") {
   using Q = __float128;
-  const FourBar<Q> fb = crankRocker<Q>();
+  const FourBarDynamics<Q> fb = crankRocker<Q>();
   const double in[3][3] = {{0.3, 1.2, -0.7}, {2.6, 2.5, 0.3}, {5.5, -1.7, -1.1}};
   for (const auto& x : in) {
     const Q t1 = x[0], t1d = x[1], t1dd = x[2];
@@ -255,7 +255,7 @@ TEST_CASE("4-bar torque = virtual work (power balance τθ̇₁ = dE_K/dt, 8th-o
 
 TEST_CASE("4-bar free motion: energy error of RK4 scales like h⁴; the 3-D DAE with projection keeps drift at rounding",
           "[constrained][fourbar][simulation]") {
-  const FourBar<double> fb = crankRocker<double>();
+  const FourBarDynamics<double> fb = crankRocker<double>();
   auto run = [&](double h, int steps) {
     std::array<double, 2> y{0.3, 2.0};
     const double e0 = fb.kineticEnergy(y[0], y[1]);
@@ -298,7 +298,7 @@ TEMPLATE_TEST_CASE("4-bar singular and impossible postures: InvalidInput, never 
                                            PlanarLink<S>{S(1), S(1) / S(2), S(0), S(1) / S(10)}};
   // non-Grashof (d₁ = 2, d₂ = 1.2, d₃ = 1, d₄ = 2.5): the crank stops where coupler and rocker align,
   // |P₂P₄| = d₂ + d₃ = 2.2, cos θ₁ = (4 + 6.25 − 4.84)/10
-  const FourBar<S> fb(S(2), S(6) / S(5), S(1), S(5) / S(2), links);
+  const FourBarDynamics<S> fb(S(2), S(6) / S(5), S(1), S(5) / S(2), links);
   const S lim = acos((S(4) + S(25) / S(4) - S(121) / S(25)) / S(10));
   const S inside = lim - S(1) / S(20), outside = lim + S(1) / S(20);
   const S tau = fb.torqueAlpha(inside, S(1), S(0));
@@ -307,7 +307,7 @@ TEMPLATE_TEST_CASE("4-bar singular and impossible postures: InvalidInput, never 
   CHECK(fb.singularityMeasure(fb.posture(lim)) < Tolerance<S>::input());
   CHECK_THROWS_AS(fb.torqueAlpha(lim, S(1), S(0)), InvalidInput);    // folded: reported singular
   CHECK_THROWS_AS(fb.posture(outside), InvalidInput);                // cannot close
-  CHECK_THROWS_AS(FourBar<S>(S(-1), S(1), S(1), S(1), links), InvalidInput);
+  CHECK_THROWS_AS(FourBarDynamics<S>(S(-1), S(1), S(1), S(1), links), InvalidInput);
   // a regular posture of the constrained tree: C (2 × 3) has rank 2, one freedom
   const ConstrainedTree<S> m = fb.constrainedTree(inside);
   CHECK(m.constraintRank(DynVector<S>::Zero(3)) == 2);

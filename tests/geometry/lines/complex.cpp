@@ -21,7 +21,7 @@ TEMPLATE_TEST_CASE("Screw axis and pitch: round trip, Ad-invariance, pitch quadr
   auto& g = rng(21);
   const int n = std::is_same_v<S, mpfr::mpreal> ? 5 : 60;
   for (int k = 0; k < n; ++k) {
-    const Line<S> ax = Line<S>::pointDirection(uniformVec<S, 3>(g, -2, 2), unitVec3<S>(g));
+    const PluckerLine<S> ax = PluckerLine<S>::pointDirection(uniformVec<S, 3>(g, -2, 2), unitVec3<S>(g));
     const S h = uniform<S>(g, -3, 3), a = uniform<S>(g, 0.5, 2);
     const Vec6<S> s = screwFromAxis(ax, h, a);
     const ScrewAxis<S> sa = screwAxis(s);
@@ -36,7 +36,7 @@ TEMPLATE_TEST_CASE("Screw axis and pitch: round trip, Ad-invariance, pitch quadr
     REQUIRE(abs(screwPitch(Vec6<S>(lineAction(x) * s)) - h) <= tol<S>(4096) * S(4));
   }
   // Pitch 0 is a line; infinite pitch (0; v): a translation, axis at infinity.
-  const Line<S> l = Line<S>::pointDirection(Vec3<S>(S(1), S(2), S(3)), Vec3<S>(S(0), S(0), S(1)));
+  const PluckerLine<S> l = PluckerLine<S>::pointDirection(Vec3<S>(S(1), S(2), S(3)), Vec3<S>(S(0), S(0), S(1)));
   REQUIRE(screwAxis(l.coords()).pitch == S(0));
   const ScrewAxis<S> t = screwAxis(screwTranslation(Vec3<S>(S(0), S(2), S(0))));
   REQUIRE(t.infinitePitch);
@@ -59,7 +59,7 @@ TEST_CASE("Screw axis agrees with the Chasles decomposition of exp(s) (algebra/s
     const ScrewAxis<double> a = screwAxis(s);
     const Screw<double> c = screwOf(SE3Tangent<double>(s).exp());
     REQUIRE(std::abs(a.pitch - c.pitch) <= 1e-12);
-    REQUIRE(a.axis.sameAs(Line<double>::pointDirection(c.point, c.axis), 1e-12));
+    REQUIRE(a.axis.sameAs(PluckerLine<double>::pointDirection(c.point, c.axis), 1e-12));
   }
 }
 
@@ -101,15 +101,15 @@ TEMPLATE_TEST_CASE("Linear complex: equation, axis, pitch, 4×4 matrix, null pol
 TEMPLATE_TEST_CASE("Singular and infinite-pitch complexes, both sides of α·b = 0", "[lines][complex]", SOMA_TEST_SCALARS) {
   using S = TestType;
   auto& g = rng(24);
-  const Line<S> m = Line<S>::pointDirection(Vec3<S>(S(1), S(0), S(0)), Vec3<S>(S(0), S(1), S(1)));
+  const PluckerLine<S> m = PluckerLine<S>::pointDirection(Vec3<S>(S(1), S(0), S(0)), Vec3<S>(S(0), S(1), S(1)));
   const LinearComplex<S> c = LinearComplex<S>::singular(m);
   REQUIRE(c.isSingular());
   for (int k = 0; k < 10; ++k) {
     // Any line meeting m is in the singular complex.
-    const Line<S> l = Line<S>::pointDirection(m.pointAt(uniform<S>(g)), uniformVec<S, 3>(g));
+    const PluckerLine<S> l = PluckerLine<S>::pointDirection(m.pointAt(uniform<S>(g)), uniformVec<S, 3>(g));
     REQUIRE(c.contains(l, tol<S>(1024)));
   }
-  REQUIRE_THROWS_AS(c.nullPoint(Plane<S>{Vec3<S>(S(0), S(0), S(1)), S(0)}), InvalidInput);
+  REQUIRE_THROWS_AS(c.nullPoint(pga::Plane<S>(Vec3<S>(S(0), S(0), S(1)), S(0))), InvalidInput);
   REQUIRE_THROWS_AS(c.nullPlane(m.pointAt(S(1) / S(3))), InvalidInput);  // y on the singular line
   // Just off singular (pitch δ): not singular on the far side of the threshold.
   const S eps = Tolerance<S>::epsilon();
@@ -119,11 +119,11 @@ TEMPLATE_TEST_CASE("Singular and infinite-pitch complexes, both sides of α·b =
   const LinearComplex<S> ci(screwTranslation(Vec3<S>(S(0), S(0), S(1))));
   REQUIRE(ci.isInfinitePitch());
   REQUIRE(ci.pitch() == std::numeric_limits<S>::infinity());
-  REQUIRE(ci.contains(Line<S>::pointDirection(uniformVec<S, 3>(g), Vec3<S>(S(1), S(2), S(0)))));
-  REQUIRE_FALSE(ci.contains(Line<S>::pointDirection(uniformVec<S, 3>(g), Vec3<S>(S(1), S(2), S(1)))));
+  REQUIRE(ci.contains(PluckerLine<S>::pointDirection(uniformVec<S, 3>(g), Vec3<S>(S(1), S(2), S(0)))));
+  REQUIRE_FALSE(ci.contains(PluckerLine<S>::pointDirection(uniformVec<S, 3>(g), Vec3<S>(S(1), S(2), S(1)))));
   // Null point of a plane parallel to the axis is at infinity (x₀ = 0).
-  const LinearComplex<S> cz = LinearComplex<S>::fromAxisPitch(Line<S>::pointDirection(Vec3<S>::Zero(), Vec3<S>::UnitZ()), S(1) / S(2));
-  const Vec4<S> pinf = cz.nullPoint(Plane<S>{Vec3<S>(S(1), S(0), S(0)), S(-1)});
+  const LinearComplex<S> cz = LinearComplex<S>::fromAxisPitch(PluckerLine<S>::pointDirection(Vec3<S>::Zero(), Vec3<S>::UnitZ()), S(1) / S(2));
+  const Vec4<S> pinf = cz.nullPoint(pga::Plane<S>(Vec3<S>(S(1), S(0), S(0)), S(1)));  // the plane x = 1
   REQUIRE(abs(pinf(0)) <= tol<S>() * pinf.norm());
 }
 

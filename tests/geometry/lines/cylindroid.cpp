@@ -40,7 +40,7 @@ TEMPLATE_TEST_CASE("Cylindroid: book two-line pencil, principal pitches, cubic (
     const S th = c.angleOf(s);
     REQUIRE(abs(c.pitch(th) - book) <= tol<S>(1024));
     REQUIRE(screwAxis(s).axis.sameAs(c.axis(th), tol<S>(4096)));
-    const Line<S> ax = screwAxis(s).axis;
+    const PluckerLine<S> ax = screwAxis(s).axis;
     for (const S& t : {S(-1), S(1) / S(2)}) REQUIRE(abs(c.implicit(ax.pointAt(t))) <= tol<S>(4096));
     // Corrected cubic of the book frame z(x² + y²) = +l(y² + xy cot φ) (E6.3); printed sign fails.
     const Vec3<S> p = ax.pointAt(S(1) / S(2));
@@ -49,7 +49,7 @@ TEMPLATE_TEST_CASE("Cylindroid: book two-line pencil, principal pitches, cubic (
     REQUIRE(abs(lhs + rhs) > S(1) / S(1000000));
   }
   // Principal axes meet at right angles at the centre.
-  const Line<S> a1 = screwAxis(c.principal(1)).axis, a2 = screwAxis(c.principal(2)).axis;
+  const PluckerLine<S> a1 = screwAxis(c.principal(1)).axis, a2 = screwAxis(c.principal(2)).axis;
   REQUIRE(relation(a1, a2).kind == LineRelationKind::Intersecting);
   REQUIRE(abs(relation(a1, a2).angle - pi<S>() / S(2)) <= tol<S>(256));
 }
@@ -70,7 +70,7 @@ TEMPLATE_TEST_CASE("Cylindroid extremes: l = 0, equal pitches, parallel directio
   for (const S& th : {S(1) / S(5), S(1), S(2)}) {
     const Vec6<S> s = cos(th) * cos(th) * a + sin(th) * sin(th) * b;  // book's (λ(λ²+μ²)…) scaled
     Vec6<S> sl = cos(th) * a + sin(th) * b;
-    const Line<S> ax = screwAxis(sl).axis;
+    const PluckerLine<S> ax = screwAxis(sl).axis;
     const S z = rx * cos(th) * cos(th) + ry * sin(th) * sin(th);
     REQUIRE(ax.distanceTo(Vec3<S>(S(0), S(0), z)) <= tol<S>(1024));
     REQUIRE(abs(screwPitch(sl) - cos(th) * sin(th) * (rx - ry)) <= tol<S>(1024));
@@ -100,7 +100,7 @@ TEMPLATE_TEST_CASE("Curvature axes: cubic surface, umbilic, saddle at infinity (
   for (const auto& [kx, ky] : {std::pair<S, S>{S(1), S(3)}, std::pair<S, S>{S(2), S(-1)}, std::pair<S, S>{S(2), S(2)}}) {
     for (const S& phi : {S(0), S(1) / S(3), S(1), S(2)}) {
       const S k = kx * cos(phi) * cos(phi) + ky * sin(phi) * sin(phi);
-      const Line<S> ax(curvatureAxis(kx, ky, S(cos(phi)), S(sin(phi))));
+      const PluckerLine<S> ax(curvatureAxis(kx, ky, S(cos(phi)), S(sin(phi))));
       REQUIRE(ax.contains(Vec3<S>(S(0), S(0), S(1) / k), tol<S>(1024)));
       REQUIRE(abs(ax.unitDirection().dot(Vec3<S>(cos(phi), sin(phi), S(0)))) <= tol<S>());
       for (const S& t : {S(-1), S(2)}) {
@@ -111,9 +111,9 @@ TEMPLATE_TEST_CASE("Curvature axes: cubic surface, umbilic, saddle at infinity (
   }
   // Umbilic: every axis through (0, 0, 1/k).
   const Vec3<S> c(S(0), S(0), S(1) / S(2));
-  for (const S& phi : {S(0), S(1), S(2)}) REQUIRE(Line<S>(curvatureAxis(S(2), S(2), S(cos(phi)), S(sin(phi)))).contains(c));
+  for (const S& phi : {S(0), S(1), S(2)}) REQUIRE(PluckerLine<S>(curvatureAxis(S(2), S(2), S(cos(phi)), S(sin(phi)))).contains(c));
   // Saddle k_x = 1, k_y = −1: the asymptotic direction λ = μ gives a line at infinity exactly.
-  REQUIRE(Line<S>(curvatureAxis(S(1), S(-1), S(1), S(1))).isAtInfinity());
+  REQUIRE(PluckerLine<S>(curvatureAxis(S(1), S(-1), S(1), S(1))).isAtInfinity());
   REQUIRE_THROWS_AS(curvatureAxis(S(0), S(0), S(1), S(0)), InvalidInput);
   // Derivative of the surface curve agrees with a central difference (double-scale check).
   const RuledSurface<S> rs = curvatureAxesSurface(S(1), S(3));

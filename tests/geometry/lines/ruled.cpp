@@ -30,7 +30,7 @@ TEMPLATE_TEST_CASE("Book reguli of x²+y²−z²=1: Klein, 2-planes, families me
     REQUIRE(abs(reciprocalProduct(a, b)) <= tol<S>());           // different families meet
     REQUIRE(abs(reciprocalProduct(a, a2)) > S(1) / S(100000));  // same family: skew
     // Points on the lines lie on the hyperboloid; det(A + B T(t)) = −(x² + y² − z² − 1).
-    const Line<S> l(a);
+    const PluckerLine<S> l(a);
     const Mat3<S> A = Mat3<S>::Identity(), B = Vec3<S>(S(-1), S(-1), S(1)).asDiagonal();
     for (const S& mu : {S(-2), S(0), S(1)}) {
       const Vec3<S> p = l.pointAt(mu);
@@ -47,14 +47,14 @@ TEMPLATE_TEST_CASE("Swept regulus: implicit quadric, throat circle, distribution
   using std::sin;
   // Axis z, generator through (d, 0, 0) with direction (0, sin α, cos α) (GF-9.4 example).
   const S d = S(4) / S(5), al = S(3) / S(5);
-  const Line<S> axis = Line<S>::pointDirection(Vec3<S>::Zero(), Vec3<S>::UnitZ());
-  const Line<S> l0 = Line<S>::pointDirection(Vec3<S>(d, S(0), S(0)), Vec3<S>(S(0), sin(al), cos(al)));
+  const PluckerLine<S> axis = PluckerLine<S>::pointDirection(Vec3<S>::Zero(), Vec3<S>::UnitZ());
+  const PluckerLine<S> l0 = PluckerLine<S>::pointDirection(Vec3<S>(d, S(0), S(0)), Vec3<S>(S(0), sin(al), cos(al)));
   const Regulus<S> r(axis, l0);
   REQUIRE(abs(r.distance() - d) <= tol<S>());
   REQUIRE(abs(r.angle() - al) <= tol<S>());
   const Regulus<S> o = r.opposite();
   for (const S& th : {S(0), S(1), S(-2), S(3)}) {
-    const Line<S> gth = r.generator(th), oth = o.generator(S(1) / S(2) - th);
+    const PluckerLine<S> gth = r.generator(th), oth = o.generator(S(1) / S(2) - th);
     for (const S& mu : {S(-3), S(0), S(2)}) {
       REQUIRE(abs(r.implicit(gth.pointAt(mu))) <= tol<S>(2048));
       REQUIRE(abs(r.implicit(oth.pointAt(mu))) <= tol<S>(2048));  // same quadric
@@ -75,17 +75,17 @@ TEMPLATE_TEST_CASE("Swept regulus: implicit quadric, throat circle, distribution
     REQUIRE(meet(f.t, f.n, tol<S>(1024)));
   }
   // Extremes: α = π/2 (plane: κ₁ = 0), d = 0 (cone: κ₁ = 0), α = 0 (cylinder: no striction).
-  const Regulus<S> pl(axis, Line<S>::pointDirection(Vec3<S>(d, S(0), S(0)), Vec3<S>::UnitY()));
+  const Regulus<S> pl(axis, PluckerLine<S>::pointDirection(Vec3<S>(d, S(0), S(0)), Vec3<S>::UnitY()));
   REQUIRE(abs(pl.surface().frame(S(1)).kappa1) <= tol<S>());
-  const Regulus<S> cone(axis, Line<S>::pointDirection(Vec3<S>::Zero(), Vec3<S>(S(0), sin(al), cos(al))));
+  const Regulus<S> cone(axis, PluckerLine<S>::pointDirection(Vec3<S>::Zero(), Vec3<S>(S(0), sin(al), cos(al))));
   REQUIRE(abs(cone.surface().frame(S(1)).kappa1) <= tol<S>());
-  const Regulus<S> cyl(axis, Line<S>::pointDirection(Vec3<S>(d, S(0), S(0)), Vec3<S>::UnitZ()));
+  const Regulus<S> cyl(axis, PluckerLine<S>::pointDirection(Vec3<S>(d, S(0), S(0)), Vec3<S>::UnitZ()));
   REQUIRE(cyl.surface().isCylindrical(S(1)));
   REQUIRE_THROWS_AS(cyl.surface().strictionPoint(S(1)), InvalidInput);
   // Nearly cylindrical, both sides of |u'| ≤ √ε|l̂'|.
   const S se = Tolerance<S>::sqrtEpsilon();
   for (const S& a : {se / S(8), S(8) * se}) {
-    const Regulus<S> nc(axis, Line<S>::pointDirection(Vec3<S>(d, S(0), S(0)), Vec3<S>(S(0), sin(a), cos(a))));
+    const Regulus<S> nc(axis, PluckerLine<S>::pointDirection(Vec3<S>(d, S(0), S(0)), Vec3<S>(S(0), sin(a), cos(a))));
     REQUIRE(nc.surface().isCylindrical(S(0)) == (a < se));
   }
 }
@@ -97,7 +97,7 @@ TEMPLATE_TEST_CASE("Ruled helicoid: κ₀ = sin α, κ₁/κ₀ = p − d cot α
   const S d = S(4) / S(5), al = S(3) / S(5), p = S(1) / S(3);
   Vec6<S> xi;
   xi << S(0), S(0), S(1), S(0), S(0), p;
-  const Line<S> l0 = Line<S>::pointDirection(Vec3<S>(d, S(0), S(0)), Vec3<S>(S(0), sin(al), cos(al)));
+  const PluckerLine<S> l0 = PluckerLine<S>::pointDirection(Vec3<S>(d, S(0), S(0)), Vec3<S>(S(0), sin(al), cos(al)));
   const RuledSurface<S> h = RuledSurface<S>::sweep(xi, l0);
   for (const S& th : {S(0), S(2)}) {
     const RuledFrame<S> f = h.frame(th);
@@ -115,13 +115,13 @@ TEMPLATE_TEST_CASE("Dual angle and common perpendicular by dual vectors agree wi
   auto& g = rng(32);
   const int n = std::is_same_v<S, mpfr::mpreal> ? 5 : 50;
   for (int k = 0; k < n; ++k) {
-    const Line<S> a = Line<S>::pointDirection(uniformVec<S, 3>(g, -2, 2), uniformVec<S, 3>(g));
-    const Line<S> b = Line<S>::pointDirection(uniformVec<S, 3>(g, -2, 2), uniformVec<S, 3>(g));
+    const PluckerLine<S> a = PluckerLine<S>::pointDirection(uniformVec<S, 3>(g, -2, 2), uniformVec<S, 3>(g));
+    const PluckerLine<S> b = PluckerLine<S>::pointDirection(uniformVec<S, 3>(g, -2, 2), uniformVec<S, 3>(g));
     const DualNumber<S> da = dualAngle(a, b);
     const LineRelation<S> r = relation(a, b);
     REQUIRE(abs(da.re - r.angle) <= tol<S>(1024));
     REQUIRE(abs(da.du - r.signedDistance) <= tol<S>(1 << 14));
-    const Line<S> cp = commonPerpendicularDual(a, b);
+    const PluckerLine<S> cp = commonPerpendicularDual(a, b);
     REQUIRE(cp.sameAs(r.commonPerpendicular(), tol<S>(1 << 14)));
     // ň is a unit line meeting both at right angles: l_i · ň = 0 (dual).
     const DualVec3<S> nn = DualVec3<S>::of(cp);
@@ -129,8 +129,8 @@ TEMPLATE_TEST_CASE("Dual angle and common perpendicular by dual vectors agree wi
     REQUIRE(abs(DualVec3<S>::of(b).dot(nn).re) + abs(DualVec3<S>::of(b).dot(nn).du) <= tol<S>(1 << 12));
   }
   // Parallel: pure dual sine, distance; common perpendicular undefined.
-  const Line<S> x = Line<S>::pointDirection(Vec3<S>::Zero(), Vec3<S>::UnitX());
-  const Line<S> y = Line<S>::pointDirection(Vec3<S>(S(0), S(0), S(2)), Vec3<S>::UnitX());
+  const PluckerLine<S> x = PluckerLine<S>::pointDirection(Vec3<S>::Zero(), Vec3<S>::UnitX());
+  const PluckerLine<S> y = PluckerLine<S>::pointDirection(Vec3<S>(S(0), S(0), S(2)), Vec3<S>::UnitX());
   REQUIRE(abs(dualAngle(x, y).du - S(2)) <= tol<S>());
   REQUIRE(dualAngle(x, y).re == S(0));
   REQUIRE_THROWS_AS(commonPerpendicularDual(x, y), InvalidInput);

@@ -46,11 +46,11 @@ template <class S> struct FourBarMotion {
   std::array<PMat<S>, 3> inertia;  ///< planar N_i at the posture
 };
 
-template <class S> class FourBar {
+template <class S> class FourBarDynamics {
  public:
   /// Lengths d₁ (crank), d₂ (coupler), d₃ (rocker), d₄ (ground) > 0, three links, assembly
   /// branch +1 (P₃ to the left of P₂→P₄) or −1. InvalidInput for non-positive or NaN data.
-  FourBar(S d1, S d2, S d3, S d4, std::array<PlanarLink<S>, 3> links, int branch = 1);
+  FourBarDynamics(S d1, S d2, S d3, S d4, std::array<PlanarLink<S>, 3> links, int branch = 1);
 
   const std::array<S, 4>& lengths() const { return d_; }
   /// The posture at crank angle θ₁. InvalidInput if the loop cannot close there (|P₂P₄| outside
@@ -94,7 +94,7 @@ template <class S> class FourBar {
   int branch_;
 };
 
-#define SOMA_FOURBAR_EXTERN(S) extern template class FourBar<S>;
+#define SOMA_FOURBAR_EXTERN(S) extern template class FourBarDynamics<S>;
 SOMA_FOR_EACH_SCALAR(SOMA_FOURBAR_EXTERN)
 #undef SOMA_FOURBAR_EXTERN
 

@@ -42,7 +42,7 @@ template <class S> class Cylindroid {
     return (h2_ - h1_) * sin(S(2) * theta) / S(2);
   }
   /// The axis of screw(θ) as a unit line.
-  Line<S> axis(const S& theta) const { return screwAxis(screw(theta)).axis; }
+  PluckerLine<S> axis(const S& theta) const { return screwAxis(screw(theta)).axis; }
   /// The cubic z(x² + y²) − (h₂ − h₁)xy at a world point (zero on the surface).
   S implicit(const Vec3<S>& x) const {
     const Vec3<S> y = r_.transpose() * (x - c_);
@@ -90,7 +90,7 @@ template <class S> Cylindroid<S>::Cylindroid(const Vec6<S>& s1, const Vec6<S>& s
   h2_ = kleinValue(p2);
   // Centre: the two principal axes meet (at right angles); take the midpoint of their common
   // perpendicular (they are exactly perpendicular, never parallel).
-  const Line<S> ax1 = screwAxis(p1).axis, ax2 = screwAxis(p2).axis;
+  const PluckerLine<S> ax1 = screwAxis(p1).axis, ax2 = screwAxis(p2).axis;
   const LineRelation<S> rel = relation(ax1, ax2);
   c_ = (rel.footA + rel.footB) / S(2);
   const Vec3<S> x = ax1.direction(), y = ax2.direction();

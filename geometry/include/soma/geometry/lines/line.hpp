@@ -49,7 +49,7 @@ template <class S> S kleinDefect(const Vec6<S>& s) {
 }
 
 /// A line of PR³ in Plücker coordinates (ω; v), convention A (v = q × ω).
-template <class S> class Line {
+template <class S> class PluckerLine {
  public:
   using Scalar = S;
 
@@ -57,57 +57,57 @@ template <class S> class Line {
   /// Klein quadric by more than Tolerance::input() (scale-free, kleinDefect). The coordinates
   /// are stored as given (no silent projection).
   // GF §6.2, GF-6.2-klein-quadric
-  Line(const Vec3<S>& w, const Vec3<S>& v) : w_(w), v_(v) { validate("Line(ω, v)"); }
-  explicit Line(const Vec6<S>& s) : w_(s.template head<3>()), v_(s.template tail<3>()) {
-    validate("Line(s)");
+  PluckerLine(const Vec3<S>& w, const Vec3<S>& v) : w_(w), v_(v) { validate("PluckerLine(ω, v)"); }
+  explicit PluckerLine(const Vec6<S>& s) : w_(s.template head<3>()), v_(s.template tail<3>()) {
+    validate("PluckerLine(s)");
   }
 
   /// Line through two points: ω = q₂ − q₁, v = q₁ × q₂ (= q₁ × ω), directed from q₁ to q₂.
   /// Throws when the points coincide to working precision (|q₂ − q₁| ≤ ε·max(|q₁|, |q₂|)).
   // GF §6.2, GF-6.2-plucker-two-points (p_ij = x_i y_j − x_j y_i, erratum E6.2; convention A, E6.1)
-  static Line throughPoints(const Vec3<S>& q1, const Vec3<S>& q2) {
+  static PluckerLine throughPoints(const Vec3<S>& q1, const Vec3<S>& q2) {
     if (!allFinite(q1) || !allFinite(q2))
-      throw InvalidInput("Line::throughPoints: a point has a NaN or infinite component");
+      throw InvalidInput("PluckerLine::throughPoints: a point has a NaN or infinite component");
     const Vec3<S> w = q2 - q1;
     const S scale2 = std::max(q1.squaredNorm(), q2.squaredNorm());
     const S e = Tolerance<S>::epsilon();
     if (w.squaredNorm() <= e * e * scale2 || w.squaredNorm() == S(0))
-      throw InvalidInput("Line::throughPoints: the two points coincide (to working precision)");
-    return Line(w, Vec3<S>(q1.cross(q2)), Unchecked{});
+      throw InvalidInput("PluckerLine::throughPoints: the two points coincide (to working precision)");
+    return PluckerLine(w, Vec3<S>(q1.cross(q2)), Unchecked{});
   }
 
   /// Line through the homogeneous points (x₀; x), (y₀; y) (x₀ = 0: a point at infinity):
   /// ω = x₀y − y₀x, v = x × y (p_ij = x_i y_j − x_j y_i). Throws if the points coincide in PR³.
   // GF §6.2 / §6.8, GF-6.2-plucker-two-points, GF-6.8-grassmannian-embedding
-  static Line throughHomogeneousPoints(const Vec4<S>& x, const Vec4<S>& y) {
+  static PluckerLine throughHomogeneousPoints(const Vec4<S>& x, const Vec4<S>& y) {
     if (!allFinite(x) || !allFinite(y))
-      throw InvalidInput("Line::throughHomogeneousPoints: a point has a NaN or infinite component");
+      throw InvalidInput("PluckerLine::throughHomogeneousPoints: a point has a NaN or infinite component");
     const Vec3<S> xv = x.template tail<3>(), yv = y.template tail<3>();
     const Vec3<S> w = x(0) * yv - y(0) * xv, v = xv.cross(yv);
     const S e = Tolerance<S>::epsilon();
     if (w.squaredNorm() + v.squaredNorm() <= e * e * x.squaredNorm() * y.squaredNorm())
-      throw InvalidInput("Line::throughHomogeneousPoints: the two points coincide in PR³");
-    return Line(w, v, Unchecked{});
+      throw InvalidInput("PluckerLine::throughHomogeneousPoints: the two points coincide in PR³");
+    return PluckerLine(w, v, Unchecked{});
   }
 
   /// Line through q with direction d (any length > 0): ω = d, v = q × d.
   // GF §6.1, GF-6.1-point-line-distance
-  static Line pointDirection(const Vec3<S>& q, const Vec3<S>& d) {
+  static PluckerLine pointDirection(const Vec3<S>& q, const Vec3<S>& d) {
     if (!allFinite(q) || !allFinite(d))
-      throw InvalidInput("Line::pointDirection: q or d has a NaN or infinite component");
-    if (d.squaredNorm() == S(0)) throw InvalidInput("Line::pointDirection: direction d is zero");
-    return Line(d, Vec3<S>(q.cross(d)), Unchecked{});
+      throw InvalidInput("PluckerLine::pointDirection: q or d has a NaN or infinite component");
+    if (d.squaredNorm() == S(0)) throw InvalidInput("PluckerLine::pointDirection: direction d is zero");
+    return PluckerLine(d, Vec3<S>(q.cross(d)), Unchecked{});
   }
 
   /// Intersection of the planes n₁·x + δ₁ = 0 and n₂·x + δ₂ = 0: ω = n₁ × n₂, v = δ₁n₂ − δ₂n₁.
   /// Planes parallel to working precision (|n₁ × n₂| ≤ ε|n₁||n₂|) meet in the line at infinity
   /// (0; δ₁n₂ − δ₂n₁), returned with ω = 0 exactly; identical planes throw.
   // GF §6.3 (β-planes: lines in a plane), GF-6.3-klein-2planes
-  static Line fromPlanes(const Vec3<S>& n1, const S& d1, const Vec3<S>& n2, const S& d2) {
+  static PluckerLine fromPlanes(const Vec3<S>& n1, const S& d1, const Vec3<S>& n2, const S& d2) {
     if (!allFinite(n1) || !allFinite(n2) || !isFinite(d1) || !isFinite(d2))
-      throw InvalidInput("Line::fromPlanes: a plane has a NaN or infinite component");
+      throw InvalidInput("PluckerLine::fromPlanes: a plane has a NaN or infinite component");
     if (n1.squaredNorm() == S(0) || n2.squaredNorm() == S(0))
-      throw InvalidInput("Line::fromPlanes: a plane normal is zero");
+      throw InvalidInput("PluckerLine::fromPlanes: a plane normal is zero");
     Vec3<S> w = n1.cross(n2);
     const Vec3<S> v = d1 * n2 - d2 * n1;
     const S e = Tolerance<S>::epsilon();
@@ -116,16 +116,16 @@ template <class S> class Line {
       w.setZero();
       const S dd = std::max(d1 * d1 * n2.squaredNorm(), d2 * d2 * n1.squaredNorm());
       if (v.squaredNorm() <= S(16) * e * e * dd || v.squaredNorm() == S(0))
-        throw InvalidInput("Line::fromPlanes: the two planes coincide");
+        throw InvalidInput("PluckerLine::fromPlanes: the two planes coincide");
     }
-    return Line(w, v, Unchecked{});
+    return PluckerLine(w, v, Unchecked{});
   }
 
   /// The line at infinity (0; n) of the planes with normal n. GF §6.2, GF-6.2-klein-quadric
-  static Line atInfinity(const Vec3<S>& n) {
+  static PluckerLine atInfinity(const Vec3<S>& n) {
     if (!allFinite(n) || n.squaredNorm() == S(0))
-      throw InvalidInput("Line::atInfinity: normal n is zero or not finite");
-    return Line(Vec3<S>::Zero(), n, Unchecked{});
+      throw InvalidInput("PluckerLine::atInfinity: normal n is zero or not finite");
+    return PluckerLine(Vec3<S>::Zero(), n, Unchecked{});
   }
 
   const Vec3<S>& direction() const { return w_; }
@@ -148,14 +148,14 @@ template <class S> class Line {
   }
   /// The directed unit representative (ω/|ω|; v/|ω|) (λ > 0 keeps the direction).
   // GF §6.4, GF-6.4-directed-lines
-  Line normalized() const {
+  PluckerLine normalized() const {
     using std::sqrt;
     requireFinite("normalized");
     const S n = sqrt(w_.squaredNorm());
-    return Line(Vec3<S>(w_ / n), Vec3<S>(v_ / n), Unchecked{});
+    return PluckerLine(Vec3<S>(w_ / n), Vec3<S>(v_ / n), Unchecked{});
   }
   /// The same line with the opposite orientation (−ω; −v). GF §6.4, GF-6.4-directed-lines
-  Line reversed() const { return Line(Vec3<S>(-w_), Vec3<S>(-v_), Unchecked{}); }
+  PluckerLine reversed() const { return PluckerLine(Vec3<S>(-w_), Vec3<S>(-v_), Unchecked{}); }
 
   /// Foot of the perpendicular from the origin: ω × v / |ω|² (convention A; the book's §6.2
   /// (v × ω)/|ω|² is convention B, E6.1). GF §6.2, GF-6.2-points-on-line
@@ -188,15 +188,15 @@ template <class S> class Line {
 
   /// The line moved by g: Ad(g) s (= line through R q + t with direction R ω).
   // GF §6.4, GF-6.4-adjoint-on-lines (T x = t × x, convention A, E6.1)
-  Line transformed(const SE3<S>& g) const {
+  PluckerLine transformed(const SE3<S>& g) const {
     const Mat3<S> r = g.rotation();
     const Vec3<S> w = r * w_;
-    return Line(w, Vec3<S>(r * v_ + g.translation().cross(w)), Unchecked{});
+    return PluckerLine(w, Vec3<S>(r * v_ + g.translation().cross(w)), Unchecked{});
   }
 
   /// Same line (any nonzero scale, including negative: rank [s_a s_b] = 1), to tolerance tol
   /// relative to |s_a||s_b|. GF §6.1, GF-6.1-same-line
-  bool sameAs(const Line& o, const S& tol = Tolerance<S>::identity()) const {
+  bool sameAs(const PluckerLine& o, const S& tol = Tolerance<S>::identity()) const {
     // |s_a ∧ s_b|² = Σ_{i<j} (a_i b_j − a_j b_i)², summed term by term: the Gram form
     // |a|²|b|² − (a·b)² cancels catastrophically (rounding ε|a|²|b|² ≫ tol²|a|²|b|²).
     const Vec6<S> a = coords(), b = o.coords();
@@ -209,14 +209,14 @@ template <class S> class Line {
     return w2 <= tol * tol * a.squaredNorm() * b.squaredNorm();
   }
 
-  template <class T> Line<T> cast() const {
-    return Line<T>(castMatrix<T>(w_), castMatrix<T>(v_));
+  template <class T> PluckerLine<T> cast() const {
+    return PluckerLine<T>(castMatrix<T>(w_), castMatrix<T>(v_));
   }
 
  private:
   struct Unchecked {};
-  Line(const Vec3<S>& w, const Vec3<S>& v, Unchecked) : w_(w), v_(v) {}
-  template <class T> friend class Line;
+  PluckerLine(const Vec3<S>& w, const Vec3<S>& v, Unchecked) : w_(w), v_(v) {}
+  template <class T> friend class PluckerLine;
 
   void validate(const char* who) const {
     if (!allFinite(w_) || !allFinite(v_))
@@ -229,7 +229,7 @@ template <class S> class Line {
   }
   void requireFinite(const char* what) const {
     if (isAtInfinity())
-      throw InvalidInput(std::string("Line::") + what + ": the line is at infinity (ω = 0)");
+      throw InvalidInput(std::string("PluckerLine::") + what + ": the line is at infinity (ω = 0)");
   }
 
   Vec3<S> w_, v_;
@@ -254,29 +254,29 @@ template <class S> struct LineRelation {
   Vec3<S> footA{Vec3<S>::Zero()}, footB{Vec3<S>::Zero()};
   Vec3<S> perpendicularDirection{Vec3<S>::Zero()};  ///< unit n (zero for parallel lines)
   /// The common perpendicular as a line (direction n through footA); only when not parallel.
-  Line<S> commonPerpendicular() const { return Line<S>::pointDirection(footA, perpendicularDirection); }
+  PluckerLine<S> commonPerpendicular() const { return PluckerLine<S>::pointDirection(footA, perpendicularDirection); }
 };
 
 /// Relative position of two lines; at least one at infinity gives kind AtInfinity (angle and
 /// distance undefined, zero). Intersecting when |d| sin α ≤ Tolerance::identity()·(|q_a|+|q_b|)
 /// (the rounding level of the reciprocal product); Coincident parallel lines when the distance is
 /// at that level. GF §6.1, GF-6.1-meet-condition; GF §9.4, GF-9.4-common-perpendicular-dual-angle
-template <class S> LineRelation<S> relation(const Line<S>& a, const Line<S>& b);
+template <class S> LineRelation<S> relation(const PluckerLine<S>& a, const PluckerLine<S>& b);
 
 /// Distance between two lines (0 for intersecting). Throws for a line at infinity.
-template <class S> S distance(const Line<S>& a, const Line<S>& b);
+template <class S> S distance(const PluckerLine<S>& a, const PluckerLine<S>& b);
 /// Angle in [0, π] between the directed lines. Throws for a line at infinity.
-template <class S> S angle(const Line<S>& a, const Line<S>& b);
+template <class S> S angle(const PluckerLine<S>& a, const PluckerLine<S>& b);
 /// The lines meet (possibly at infinity: parallel lines meet at infinity, GF §6.1): the
 /// reciprocal product is 0 to tol·(|ω_a||v_b| + |v_a||ω_b|). GF §6.1, GF-6.1-meet-condition
-template <class S> bool meet(const Line<S>& a, const Line<S>& b, const S& tol = Tolerance<S>::identity());
+template <class S> bool meet(const PluckerLine<S>& a, const PluckerLine<S>& b, const S& tol = Tolerance<S>::identity());
 
 /// Ad(g) as the 6×6 matrix [[R, 0], [T R, R]] acting on Plücker coordinates (reuses SE3::adjoint).
 // GF §6.4, GF-6.4-adjoint-on-lines
 template <class S> Mat6<S> lineAction(const SE3<S>& g) { return g.adjoint(); }
 
 // ---- implementation ---------------------------------------------------------------------------
-template <class S> LineRelation<S> relation(const Line<S>& a, const Line<S>& b) {
+template <class S> LineRelation<S> relation(const PluckerLine<S>& a, const PluckerLine<S>& b) {
   using std::abs;
   using std::atan2;
   using std::sqrt;
@@ -319,17 +319,17 @@ template <class S> LineRelation<S> relation(const Line<S>& a, const Line<S>& b) 
   return r;
 }
 
-template <class S> S distance(const Line<S>& a, const Line<S>& b) {
+template <class S> S distance(const PluckerLine<S>& a, const PluckerLine<S>& b) {
   if (a.isAtInfinity() || b.isAtInfinity())
-    throw InvalidInput("distance(Line, Line): a line is at infinity");
+    throw InvalidInput("distance(PluckerLine, PluckerLine): a line is at infinity");
   return relation(a, b).distance;
 }
-template <class S> S angle(const Line<S>& a, const Line<S>& b) {
+template <class S> S angle(const PluckerLine<S>& a, const PluckerLine<S>& b) {
   if (a.isAtInfinity() || b.isAtInfinity())
-    throw InvalidInput("angle(Line, Line): a line is at infinity");
+    throw InvalidInput("angle(PluckerLine, PluckerLine): a line is at infinity");
   return relation(a, b).angle;
 }
-template <class S> bool meet(const Line<S>& a, const Line<S>& b, const S& tol) {
+template <class S> bool meet(const PluckerLine<S>& a, const PluckerLine<S>& b, const S& tol) {
   using std::abs;
   using std::sqrt;
   const S wa = sqrt(a.direction().squaredNorm()), wb = sqrt(b.direction().squaredNorm());
@@ -338,14 +338,14 @@ template <class S> bool meet(const Line<S>& a, const Line<S>& b, const S& tol) {
 }
 
 #define SOMA_LINE_EXTERN(S)                                                           \
-  extern template class Line<S>;                                                      \
-  extern template LineRelation<S> relation<S>(const Line<S>&, const Line<S>&);        \
-  extern template S distance<S>(const Line<S>&, const Line<S>&);                      \
-  extern template S angle<S>(const Line<S>&, const Line<S>&);                         \
-  extern template bool meet<S>(const Line<S>&, const Line<S>&, const S&);
+  extern template class PluckerLine<S>;                                                      \
+  extern template LineRelation<S> relation<S>(const PluckerLine<S>&, const PluckerLine<S>&);        \
+  extern template S distance<S>(const PluckerLine<S>&, const PluckerLine<S>&);                      \
+  extern template S angle<S>(const PluckerLine<S>&, const PluckerLine<S>&);                         \
+  extern template bool meet<S>(const PluckerLine<S>&, const PluckerLine<S>&, const S&);
 SOMA_FOR_EACH_SCALAR(SOMA_LINE_EXTERN)
 #undef SOMA_LINE_EXTERN
 
-using Lined = Line<double>;
+using Lined = PluckerLine<double>;
 
 }  // namespace soma

@@ -4,17 +4,11 @@
 // singular (all lines meeting one line) when α·b = 0; infinite pitch (α = 0) gives the lines
 // perpendicular to b. The null polarity sends a point to the plane of the complex lines through it.
 #include "soma/geometry/lines/screw_axis.hpp"
+#include "soma/geometry/pga/plane.hpp"
 
 #include <Eigen/LU>
 
 namespace soma {
-
-/// A plane n·x + δ = 0 (n ≠ 0).
-template <class S> struct Plane {
-  Vec3<S> n{Vec3<S>::UnitZ()};
-  S delta{0};
-  S eval(const Vec3<S>& x) const { return n.dot(x) + delta; }
-};
 
 template <class S> class LinearComplex {
  public:
@@ -26,11 +20,11 @@ template <class S> class LinearComplex {
   }
   /// The complex with the given axis (a finite line) and pitch h: s = (u; m + h u).
   // GF §6.6, GF-6.6-linear-complex
-  static LinearComplex fromAxisPitch(const Line<S>& axis, const S& pitch) {
+  static LinearComplex fromAxisPitch(const PluckerLine<S>& axis, const S& pitch) {
     return LinearComplex(screwFromAxis(axis, pitch));
   }
   /// The singular complex of all lines meeting l. GF §6.6, GF-6.6-linear-complex
-  static LinearComplex singular(const Line<S>& l) { return LinearComplex(l.coords()); }
+  static LinearComplex singular(const PluckerLine<S>& l) { return LinearComplex(l.coords()); }
 
   const Vec6<S>& screw() const { return s_; }
   Vec3<S> alpha() const { return s_.template head<3>(); }
@@ -40,20 +34,20 @@ template <class S> class LinearComplex {
   S pitch() const { return screwPitch(s_); }
   /// Axis (α; b − pα) as a unit line (the line at infinity (0; b) for α = 0).
   // GF §6.6, GF-6.6-complex-symmetries
-  Line<S> axis() const { return screwAxis(s_).axis; }
+  PluckerLine<S> axis() const { return screwAxis(s_).axis; }
   /// α·b = 0 to tolerance relative to |α||b| (then every complex line meets the line s).
   // GF §6.6, GF-6.6-linear-complex (tangent hyperplane of the Klein quadric)
   bool isSingular(const S& tol = Tolerance<S>::identity()) const { return kleinDefect(s_) <= tol; }
   bool isInfinitePitch() const { return alpha().squaredNorm() == S(0); }
 
   /// The value b·ω + α·v of the complex's equation on l (relative to |s||l|).
-  S relativeResidual(const Line<S>& l) const {
+  S relativeResidual(const PluckerLine<S>& l) const {
     using std::abs;
     using std::sqrt;
     const Vec6<S> c = l.coords();
     return abs(reciprocalProduct(s_, c)) / sqrt(s_.squaredNorm() * c.squaredNorm());
   }
-  bool contains(const Line<S>& l, const S& tol = Tolerance<S>::identity()) const {
+  bool contains(const PluckerLine<S>& l, const S& tol = Tolerance<S>::identity()) const {
     return relativeResidual(l) <= tol;
   }
 
@@ -69,25 +63,26 @@ template <class S> class LinearComplex {
     return x;
   }
 
-  /// Null plane of the finite point y: n = b + α × y, δ = −b·y (every complex line through y lies
-  /// in it). For a point on the line of a singular complex, or on the axis of an infinite-pitch...
+  /// Null plane of the finite point y: n·x = b·y with n = b + α × y (every complex line through y
+  /// lies in it), as the plane of geometry/pga (n·r = d). For a point on the line of a singular complex, or on the axis of an infinite-pitch...
   /// n = 0: every line through y is in the complex; throws then.
   // GF §6.6, GF-6.6-complex-4x4 (the C_i corrected, erratum E6.6)
-  Plane<S> nullPlane(const Vec3<S>& y) const {
+  pga::Plane<S> nullPlane(const Vec3<S>& y) const {
     const Vec3<S> n = b() + alpha().cross(y);
     const S e = Tolerance<S>::identity();
     if (n.squaredNorm() <= e * e * (b().squaredNorm() + alpha().squaredNorm() * y.squaredNorm()))
       throw InvalidInput("LinearComplex::nullPlane: every line through y is in the complex (y on the singular line)");
-    return {n, -b().dot(y)};
+    return pga::Plane<S>(n, S(b().dot(y)));
   }
   /// Null point of a plane: the point through which all complex lines in the plane pass, as a
   /// homogeneous (x₀; x) (x₀ = 0: at infinity, for planes parallel to the axis). Solves the
   /// null polarity of matrix4(). Throws for a singular complex. GF §6.6, GF-6.6-complex-4x4
-  Vec4<S> nullPoint(const Plane<S>& p) const {
+  Vec4<S> nullPoint(const pga::Plane<S>& p) const {
     if (isSingular()) throw InvalidInput("LinearComplex::nullPoint: the complex is singular (no null polarity)");
-    // Plane coefficients in the order (x₁, x₂, x₃, x₀): π = (n, δ); null plane of y is Xᵀ y (row yᵀX).
+    // Plane coefficients in the order (x₁, x₂, x₃, x₀): π = (n, −d) for n·x = d; the null plane of y
+    // is Xᵀ y (row yᵀX).
     Vec4<S> pi;
-    pi << p.n, p.delta;
+    pi << p.normal(), S(-p.distance());
     const Mat4<S> xt = matrix4().transpose();
     const Vec4<S> y = xt.fullPivLu().solve(pi);
     Vec4<S> out;
@@ -97,15 +92,15 @@ template <class S> class LinearComplex {
 
   /// The complex line through y in its null plane at angle θ (a pencil: θ ∈ [0, π) covers it once).
   // GF §6.6, GF-6.6-complex-4x4
-  Line<S> lineThrough(const Vec3<S>& y, const S& theta) const {
+  PluckerLine<S> lineThrough(const Vec3<S>& y, const S& theta) const {
     using std::cos;
     using std::sin;
     using std::sqrt;
-    const Plane<S> p = nullPlane(y);
-    const Vec3<S> n = p.n / sqrt(p.n.squaredNorm());
+    const Vec3<S> n0 = nullPlane(y).normal();
+    const Vec3<S> n = n0 / sqrt(n0.squaredNorm());
     Vec3<S> e1 = n.unitOrthogonal();
     const Vec3<S> e2 = n.cross(e1);
-    return Line<S>::pointDirection(y, Vec3<S>(cos(theta) * e1 + sin(theta) * e2));
+    return PluckerLine<S>::pointDirection(y, Vec3<S>(cos(theta) * e1 + sin(theta) * e2));
   }
 
   /// A rigid symmetry of the complex: rotation θ about α (unit) then translation

@@ -36,14 +36,14 @@ template <class S> class Regulus {
   /// The regulus swept by l₀ rotating about `axis` (both finite lines). Any l₀ is accepted:
   /// d = 0 gives a cone, α = 0 a cylinder (no striction curve), α = π/2 a plane.
   // GF §6.5.1, GF-6.5.1-conic-to-quadric; GF §9.4, GF-9.4-hyperboloid-regulus-invariants
-  Regulus(const Line<S>& axis, const Line<S>& l0);
+  Regulus(const PluckerLine<S>& axis, const PluckerLine<S>& l0);
 
-  const Line<S>& axis() const { return axis_; }
+  const PluckerLine<S>& axis() const { return axis_; }
   S distance() const { return d_; }       ///< d between axis and generator
   S angle() const { return alpha_; }      ///< α between axis and generator, [0, π]
   Vec3<S> centre() const { return c_; }   ///< foot on the axis of the common perpendicular
   /// Generator at rotation angle θ.
-  Line<S> generator(const S& theta) const { return Line<S>(surface_.coords(theta)); }
+  PluckerLine<S> generator(const S& theta) const { return PluckerLine<S>(surface_.coords(theta)); }
   /// The opposite regulus (the other family on the same quadric): l₀ reflected in the plane
   /// through the axis and the common perpendicular.
   Regulus opposite() const;
@@ -53,14 +53,14 @@ template <class S> class Regulus {
   S implicit(const Vec3<S>& x) const;
 
  private:
-  Line<S> axis_, l0_;
+  PluckerLine<S> axis_, l0_;
   S d_{0}, alpha_{0};
   Vec3<S> c_, e1_, e3_;  // centre, unit common-perpendicular direction (to l₀), unit axis
   RuledSurface<S> surface_;
 };
 
 template <class S>
-Regulus<S>::Regulus(const Line<S>& axis, const Line<S>& l0)
+Regulus<S>::Regulus(const PluckerLine<S>& axis, const PluckerLine<S>& l0)
     : axis_(axis.normalized()), l0_(l0.normalized()),
       surface_(RuledSurface<S>::sweep(screwFromAxis(axis.normalized(), S(0)), l0.normalized())) {
   const LineRelation<S> r = relation(axis_, l0_);
@@ -85,7 +85,7 @@ template <class S> Regulus<S> Regulus<S>::opposite() const {
   const Vec3<S> u = l0_.direction();
   const Vec3<S> ur = u - S(2) * u.dot(e2) * e2;
   const Vec3<S> p = l0_.closestPoint(c_);
-  return Regulus(axis_, Line<S>::pointDirection(p, ur));
+  return Regulus(axis_, PluckerLine<S>::pointDirection(p, ur));
 }
 
 template <class S> S Regulus<S>::implicit(const Vec3<S>& x) const {

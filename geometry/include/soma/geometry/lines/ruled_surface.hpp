@@ -15,8 +15,8 @@ namespace soma {
 /// A dual vector a + εb (a line (u; m) when |u| = 1, u·m = 0). GF §9.4, GF-9.4-lines-as-dual-vectors
 template <class S> struct DualVec3 {
   Vec3<S> re{Vec3<S>::Zero()}, du{Vec3<S>::Zero()};
-  static DualVec3 of(const Line<S>& l) {
-    const Line<S> u = l.normalized();
+  static DualVec3 of(const PluckerLine<S>& l) {
+    const PluckerLine<S> u = l.normalized();
     return {u.direction(), u.moment()};
   }
   static DualVec3 of(const Vec6<S>& s) { return {s.template head<3>(), s.template tail<3>()}; }
@@ -37,7 +37,7 @@ template <class S> struct DualVec3 {
 /// cosine, d signed along n = u₁ × u₂ — the same d as relation()). For parallel lines
 /// (sin α ≤ √ε) the dual sine is pure dual and d = |dual part| ≥ 0.
 // GF §9.4, GF-9.4-common-perpendicular-dual-angle
-template <class S> DualNumber<S> dualAngle(const Line<S>& a, const Line<S>& b) {
+template <class S> DualNumber<S> dualAngle(const PluckerLine<S>& a, const PluckerLine<S>& b) {
   using std::atan2;
   using std::sqrt;
   const DualVec3<S> la = DualVec3<S>::of(a), lb = DualVec3<S>::of(b);
@@ -53,7 +53,7 @@ template <class S> DualNumber<S> dualAngle(const Line<S>& a, const Line<S>& b) {
 
 /// Common perpendicular of two non-parallel lines as the unit dual vector ň = (l₁ × l₂)/|l₁ × l₂|
 /// (dual division). Throws for parallel lines (sin α ≤ √ε). GF §9.4, GF-9.4-common-perpendicular-dual-angle
-template <class S> Line<S> commonPerpendicularDual(const Line<S>& a, const Line<S>& b) {
+template <class S> PluckerLine<S> commonPerpendicularDual(const PluckerLine<S>& a, const PluckerLine<S>& b) {
   using std::sqrt;
   const DualVec3<S> c = DualVec3<S>::of(a).cross(DualVec3<S>::of(b));
   const S c0sq = c.re.squaredNorm();
@@ -63,7 +63,7 @@ template <class S> Line<S> commonPerpendicularDual(const Line<S>& a, const Line<
   // (c.re + ε c.du)/(c0 + ε c1) = c.re/c0 + ε (c.du c0 − c.re c1)/c0²; built through its foot
   // u × m so that a perpendicular passing near the origin stays exactly a line.
   const Vec3<S> u = c.re / c0, m = (c.du * c0 - c.re * c1) / c0sq;
-  return Line<S>::pointDirection(Vec3<S>(u.cross(m)), u);
+  return PluckerLine<S>::pointDirection(Vec3<S>(u.cross(m)), u);
 }
 
 // ---- ruled surfaces ---------------------------------------------------------------------------
@@ -72,7 +72,7 @@ template <class S> Line<S> commonPerpendicularDual(const Line<S>& a, const Line<
 /// κ̌ = κ₀ + εκ₁ with dl̂/dλ = κ̌ň, the central normal ň (unit line through the striction point,
 /// direction u'/|u'|), the central tangent ť = l̂ × ň, and the distribution parameter κ₁/κ₀.
 template <class S> struct RuledFrame {
-  Line<S> l, n, t;
+  PluckerLine<S> l, n, t;
   S kappa0{0}, kappa1{0};
   Vec3<S> striction{Vec3<S>::Zero()};
   S distributionParameter{0};
@@ -106,7 +106,7 @@ template <class S> class RuledSurface {
   /// The orbit of a line under the one-parameter subgroup exp(λξ): s(λ) = Ad(exp(λξ)) l₀,
   /// s'(λ) = ad(ξ) s(λ). A pure rotation about a line not meeting l₀ sweeps a regulus, a
   /// finite-pitch screw a ruled helicoid. GF §6.5.1, GF-6.5.1-conic-to-quadric; GF §9.4, GF-9.4-ruled-helicoid
-  static RuledSurface sweep(const Vec6<S>& xi, const Line<S>& l0) {
+  static RuledSurface sweep(const Vec6<S>& xi, const PluckerLine<S>& l0) {
     const Vec6<S> s0 = l0.coords();
     return RuledSurface(
         [=](const S& x) { return Vec6<S>(SE3Tangent<S>(Vec6<S>(xi * x)).exp().adjoint() * s0); },
@@ -119,7 +119,7 @@ template <class S> class RuledSurface {
   Vec6<S> coords(const S& lambda) const { return s_(lambda); }
   Vec6<S> derivative(const S& lambda) const { return ds_(lambda); }
   /// The unit generator l̂(λ) and the derivative of the unit curve l̂'(λ).
-  Line<S> generator(const S& lambda) const { return Line<S>(s_(lambda)).normalized(); }
+  PluckerLine<S> generator(const S& lambda) const { return PluckerLine<S>(s_(lambda)).normalized(); }
   Vec6<S> unitDerivative(const S& lambda) const;
 
   /// |u'| ≤ √ε·|l̂'|: the generators are (locally) parallel — a cylinder; the striction point is
@@ -158,7 +158,7 @@ template <class S> bool RuledSurface<S>::isCylindrical(const S& lambda) const {
 
 template <class S> Vec3<S> RuledSurface<S>::strictionPoint(const S& lambda) const {
   if (isCylindrical(lambda)) throw InvalidInput("RuledSurface::strictionPoint: cylindrical generator (u' = 0)");
-  const Line<S> l = generator(lambda);
+  const PluckerLine<S> l = generator(lambda);
   const Vec6<S> dl = unitDerivative(lambda);
   const Vec3<S> u = l.direction(), m = l.moment(), du = dl.template head<3>(), dm = dl.template tail<3>();
   const Vec3<S> r = u.cross(m), dr = du.cross(m) + u.cross(dm);
@@ -167,7 +167,7 @@ template <class S> Vec3<S> RuledSurface<S>::strictionPoint(const S& lambda) cons
 
 template <class S> S RuledSurface<S>::distributionParameter(const S& lambda) const {
   if (isCylindrical(lambda)) throw InvalidInput("RuledSurface::distributionParameter: cylindrical generator (u' = 0)");
-  const Line<S> l = generator(lambda);
+  const PluckerLine<S> l = generator(lambda);
   const Vec6<S> dl = unitDerivative(lambda);
   const Vec3<S> u = l.direction(), m = l.moment(), du = dl.template head<3>(), dm = dl.template tail<3>();
   const Vec3<S> dr = du.cross(m) + u.cross(dm);
@@ -177,22 +177,22 @@ template <class S> S RuledSurface<S>::distributionParameter(const S& lambda) con
 template <class S> RuledFrame<S> RuledSurface<S>::frame(const S& lambda) const {
   using std::sqrt;
   if (isCylindrical(lambda)) throw InvalidInput("RuledSurface::frame: cylindrical generator (u' = 0)");
-  const Line<S> l = generator(lambda);
+  const PluckerLine<S> l = generator(lambda);
   const Vec6<S> dl = unitDerivative(lambda);
   const ScrewAxis<S> ax = screwAxis(dl);  // axis = central normal, pitch = κ₁/κ₀
   const LineRelation<S> rel = relation(l, ax.axis);
   // Orient ň along u' (the axis from screwAxis already has direction u'/|u'|).
-  const Line<S> n = Line<S>::pointDirection(rel.footA, ax.axis.direction());
+  const PluckerLine<S> n = PluckerLine<S>::pointDirection(rel.footA, ax.axis.direction());
   // ť = ľ × ň: the line through the striction point along u × n.
-  const Line<S> t = Line<S>::pointDirection(rel.footA, Vec3<S>(l.direction().cross(n.direction())));
+  const PluckerLine<S> t = PluckerLine<S>::pointDirection(rel.footA, Vec3<S>(l.direction().cross(n.direction())));
   RuledFrame<S> f{l, n, t, ax.amplitude, ax.amplitude * ax.pitch, rel.footA, ax.pitch};
   return f;
 }
 
 #define SOMA_RULED_EXTERN(S)                                                      \
   extern template class RuledSurface<S>;                                          \
-  extern template DualNumber<S> dualAngle<S>(const Line<S>&, const Line<S>&);     \
-  extern template Line<S> commonPerpendicularDual<S>(const Line<S>&, const Line<S>&);
+  extern template DualNumber<S> dualAngle<S>(const PluckerLine<S>&, const PluckerLine<S>&);     \
+  extern template PluckerLine<S> commonPerpendicularDual<S>(const PluckerLine<S>&, const PluckerLine<S>&);
 SOMA_FOR_EACH_SCALAR(SOMA_RULED_EXTERN)
 #undef SOMA_RULED_EXTERN
 

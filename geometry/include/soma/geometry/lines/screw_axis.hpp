@@ -13,7 +13,7 @@ namespace soma {
 /// Axis, pitch and amplitude of a screw. For an infinite-pitch screw (ω = 0) `axis` is the line
 /// at infinity (0; v) (the direction of translation names it), pitch = +∞ and amplitude = |v|.
 template <class S> struct ScrewAxis {
-  Line<S> axis;            ///< unit line (|ω| = 1) through the axis, same orientation as ω
+  PluckerLine<S> axis;            ///< unit line (|ω| = 1) through the axis, same orientation as ω
   S pitch{0};              ///< h = ω·v/ω·ω per radian; +∞ when infinitePitch
   S amplitude{0};          ///< |ω| (|v| for infinite pitch)
   bool infinitePitch = false;
@@ -38,21 +38,21 @@ template <class S> ScrewAxis<S> screwAxis(const Vec6<S>& s) {
   const S ww = w.squaredNorm();
   if (ww == S(0)) {
     if (v.squaredNorm() == S(0)) throw InvalidInput("screwAxis: the zero screw has no axis");
-    return {Line<S>::atInfinity(v), std::numeric_limits<S>::infinity(), sqrt(v.squaredNorm()), true};
+    return {PluckerLine<S>::atInfinity(v), std::numeric_limits<S>::infinity(), sqrt(v.squaredNorm()), true};
   }
   const S h = w.dot(v) / ww, n = sqrt(ww);
   // The axis through its foot q = ω × v/|ω|² (convention A): q × u is perpendicular to u up to
   // rounding relative to |q|, even when the axis passes within rounding of the origin (the
   // moment v − hω would be pure rounding noise along ω there).
   const Vec3<S> q = w.cross(v) / ww;
-  return {Line<S>::pointDirection(q, Vec3<S>(w / n)), h, n, false};
+  return {PluckerLine<S>::pointDirection(q, Vec3<S>(w / n)), h, n, false};
 }
 
 /// The screw of amplitude a about a finite axis with pitch h: a·(u; m + h u), (u; m) the unit axis.
 // GF §6.4, GF-6.4-pitch-quadrics
-template <class S> Vec6<S> screwFromAxis(const Line<S>& axis, const S& pitch, const S& amplitude = S(1)) {
+template <class S> Vec6<S> screwFromAxis(const PluckerLine<S>& axis, const S& pitch, const S& amplitude = S(1)) {
   if (!isFinite(pitch)) throw InvalidInput("screwFromAxis: pitch is not finite (use screwTranslation)");
-  const Line<S> u = axis.normalized();  // throws for a line at infinity
+  const PluckerLine<S> u = axis.normalized();  // throws for a line at infinity
   Vec6<S> s;
   s << u.direction(), Vec3<S>(u.moment() + pitch * u.direction());
   return amplitude * s;
@@ -69,7 +69,7 @@ template <class S> Vec6<S> screwTranslation(const Vec3<S>& d) {
 #define SOMA_SCREW_AXIS_EXTERN(S)                                        \
   extern template S screwPitch<S>(const Vec6<S>&);                       \
   extern template ScrewAxis<S> screwAxis<S>(const Vec6<S>&);             \
-  extern template Vec6<S> screwFromAxis<S>(const Line<S>&, const S&, const S&);
+  extern template Vec6<S> screwFromAxis<S>(const PluckerLine<S>&, const S&, const S&);
 SOMA_FOR_EACH_SCALAR(SOMA_SCREW_AXIS_EXTERN)
 #undef SOMA_SCREW_AXIS_EXTERN
 

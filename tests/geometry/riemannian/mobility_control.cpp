@@ -1,8 +1,8 @@
 // GF §15.2–15.4: loop mobility (Table 15.1, Bennett), the geodesic control laws in closed loop, and
 // the hybrid-control projectors with their transformation laws.
-#include "soma/geometry/dyngeom/geodesic_control.hpp"
-#include "soma/geometry/dyngeom/hybrid_control.hpp"
-#include "soma/geometry/dyngeom/mobility.hpp"
+#include "soma/geometry/riemannian/geodesic_control.hpp"
+#include "soma/geometry/riemannian/hybrid_control.hpp"
+#include "soma/geometry/riemannian/mobility.hpp"
 
 #include "../dynamics/serial_dynamics_support.hpp"
 
@@ -43,7 +43,7 @@ DgVector<S> acceleratingTorqueAsPrinted(const SerialDynamics<S>& robot, const Jo
 }
 }  // namespace
 
-TEMPLATE_TEST_CASE("GF §15.2 Table 15.1: ten screw systems, each closed under the bracket", "[dyngeom][mobility]",
+TEMPLATE_TEST_CASE("GF §15.2 Table 15.1: ten screw systems, each closed under the bracket", "[riemannian][mobility]",
                    SOMA_TEST_SCALARS) {
   using S = TestType;
   const auto rows = table15_1<S>(S(3) / S(2));
@@ -65,7 +65,7 @@ TEMPLATE_TEST_CASE("GF §15.2 Table 15.1: ten screw systems, each closed under t
 
 TEMPLATE_TEST_CASE("GF §15.2: planar and spherical 4R have m = n − dim Δ∞ = 1; the Bennett loop has mobility 1 although "
                    "Kutzbach and the completion group give −2",
-                   "[dyngeom][mobility]", double, long double, __float128) {
+                   "[riemannian][mobility]", double, long double, __float128) {
   using S = TestType;
   CHECK(kutzbachGrubler(4, 4, 4) == -2);
   CHECK(kutzbachGrubler(4, 4, 4, 3) == 1);
@@ -98,7 +98,7 @@ TEMPLATE_TEST_CASE("GF §15.2: planar and spherical 4R have m = n − dim Δ∞ 
 }
 
 TEMPLATE_TEST_CASE("GF §15.3: the velocity-tracking law's twist error decays as e^{-λt}; geodesic law keeps the twist",
-                   "[dyngeom][control]", double, long double) {
+                   "[riemannian][control]", double, long double) {
   using S = TestType;
   auto& g = rng(1530);
   const SerialDynamics<S> robot = soma::test::build<S>(soma::test::randomRobot(g, 6));
@@ -147,7 +147,7 @@ TEMPLATE_TEST_CASE("GF §15.3: the velocity-tracking law's twist error decays as
 }
 
 TEMPLATE_TEST_CASE("GF §15.4.3: dual-basis projectors are idempotent and complementary; transformation laws hold",
-                   "[dyngeom][hybrid]", SOMA_TEST_SCALARS) {
+                   "[riemannian][hybrid]", SOMA_TEST_SCALARS) {
   using S = TestType;
   auto& g = rng(1540);
   const S tol = Tolerance<S>::identity(4096);
@@ -183,7 +183,7 @@ TEMPLATE_TEST_CASE("GF §15.4.3: dual-basis projectors are idempotent and comple
 }
 
 TEMPLATE_TEST_CASE("GF §15.4.3 peg in hole: AB = diag(0,0,1,0,0,1), XY = diag(1,1,0,1,1,0); shifted origin (erratum E15.8)",
-                   "[dyngeom][hybrid]", SOMA_TEST_SCALARS) {
+                   "[riemannian][hybrid]", SOMA_TEST_SCALARS) {
   using S = TestType;
   DgMatrix<S> Z = DgMatrix<S>::Zero(6, 2), Sp = DgMatrix<S>::Zero(6, 4);
   Z(2, 0) = Z(5, 1) = S(1);
@@ -210,7 +210,7 @@ TEMPLATE_TEST_CASE("GF §15.4.3 peg in hole: AB = diag(0,0,1,0,0,1), XY = diag(1
   CHECK(maxAbs<S>(DgMatrix<S>(pt.motionProjector() - ABt)) <= tol);
 }
 
-TEMPLATE_TEST_CASE("GF §15.4.4: N6-orthonormal projectors; the pinned body's reaction is N6 II(V,V)", "[dyngeom][hybrid]",
+TEMPLATE_TEST_CASE("GF §15.4.4: N6-orthonormal projectors; the pinned body's reaction is N6 II(V,V)", "[riemannian][hybrid]",
                    SOMA_TEST_SCALARS) {
   using S = TestType;
   auto& g = rng(1544);

@@ -3,8 +3,8 @@
 // JᵀQ_pJ (analytic for five scalars, finite differences in double), geodesics = one-parameter
 // subgroups for every Q_p, the covariant derivative's metric compatibility, the Maurer–Cartan
 // structure equation, and the singular-Jacobian edge.
-#include "soma/geometry/dyngeom/invariant_metric.hpp"
-#include "soma/geometry/dyngeom/joint_space_geometry.hpp"
+#include "soma/geometry/riemannian/invariant_metric.hpp"
+#include "soma/geometry/riemannian/joint_space_geometry.hpp"
 
 #include "../../support/scalars.hpp"
 
@@ -45,7 +45,7 @@ template <class S> S maxAbsAll(const std::vector<DgMatrix<S>>& a) {
 }
 }  // namespace
 
-TEMPLATE_TEST_CASE("GF §15.1: Q0, Qinf and every Q_p are ad-invariant; a pitch-p screw is Q_p-null", "[dyngeom][metric]",
+TEMPLATE_TEST_CASE("GF §15.1: Q0, Qinf and every Q_p are ad-invariant; a pitch-p screw is Q_p-null", "[riemannian][metric]",
                    SOMA_TEST_SCALARS) {
   using S = TestType;
   auto& g = rng(1501);
@@ -67,7 +67,7 @@ TEMPLATE_TEST_CASE("GF §15.1: Q0, Qinf and every Q_p are ad-invariant; a pitch-
 }
 
 TEMPLATE_TEST_CASE("GF §15.1/§15.3: nabla = ½[,] is torsion-free and metric; R = ¼[[X,Y],Z]; Q(R(X,Y)Z,W) = ¼Q([X,Y],[Z,W])",
-                   "[dyngeom][metric]", SOMA_TEST_SCALARS) {
+                   "[riemannian][metric]", SOMA_TEST_SCALARS) {
   using S = TestType;
   auto& g = rng(1502);
   const InvariantMetric<S> Q{S(1), S(3) / S(10)};
@@ -88,7 +88,7 @@ TEMPLATE_TEST_CASE("GF §15.1/§15.3: nabla = ½[,] is torsion-free and metric; 
 }
 
 TEMPLATE_TEST_CASE("GF §15.1: the book's joint-space Christoffel symbols equal the Levi-Civita symbols of J^T Q_p J",
-                   "[dyngeom][christoffel]", SOMA_TEST_SCALARS) {
+                   "[riemannian][christoffel]", SOMA_TEST_SCALARS) {
   using S = TestType;
   auto& g = rng(1503);
   // relative bound: J⁻¹ of random 6R robots has condition numbers up to ~1e3 here, so 1e5 ulps
@@ -118,7 +118,7 @@ TEMPLATE_TEST_CASE("GF §15.1: the book's joint-space Christoffel symbols equal 
 }
 
 TEST_CASE("GF §15.1: Levi-Civita from finite differences of J^T Q_p J equals the book form (double, |err| < 1e-7)",
-          "[dyngeom][christoffel]") {
+          "[riemannian][christoffel]") {
   using S = double;
   auto& g = rng(1504);
   for (int t = 0; t < 3; ++t) {
@@ -152,7 +152,7 @@ TEST_CASE("GF §15.1: Levi-Civita from finite differences of J^T Q_p J equals th
 }
 
 TEMPLATE_TEST_CASE("GF §15.1: geodesics are one-parameter subgroups for every Q_p (end-effector twist constant)",
-                   "[dyngeom][geodesic]", double, long double, __float128) {
+                   "[riemannian][geodesic]", double, long double, __float128) {
   using S = TestType;
   auto& g = rng(1505);
   const JointSpaceGeometry<S> geo(randomScrews<S>(g, 6));
@@ -178,7 +178,7 @@ TEMPLATE_TEST_CASE("GF §15.1: geodesics are one-parameter subgroups for every Q
 }
 
 TEST_CASE("GF §15.1: metric compatibility of the joint-space covariant derivative and the Maurer–Cartan equation (double)",
-          "[dyngeom][geodesic]") {
+          "[riemannian][geodesic]") {
   using S = double;
   auto& g = rng(1506);
   const InvariantMetric<S> Q{1, -0.4};
@@ -215,7 +215,7 @@ TEST_CASE("GF §15.1: metric compatibility of the joint-space covariant derivati
   CHECK(err < 1e-9);
 }
 
-TEMPLATE_TEST_CASE("GF §15.1 edge: a singular Jacobian gives InvalidInput, never NaN", "[dyngeom][edge]", SOMA_TEST_SCALARS) {
+TEMPLATE_TEST_CASE("GF §15.1 edge: a singular Jacobian gives InvalidInput, never NaN", "[riemannian][edge]", SOMA_TEST_SCALARS) {
   using S = TestType;
   auto& g = rng(1507);
   auto s = randomScrews<S>(g, 6);

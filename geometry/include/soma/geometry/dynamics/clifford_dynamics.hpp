@@ -26,7 +26,7 @@
 #include <array>
 #include <initializer_list>
 
-namespace soma::cl062 {
+namespace soma::clifford_dynamics {
 
 using Sig = clifford::Signature<0, 6, 2>;
 using clifford::Blade;
@@ -179,7 +179,7 @@ template <class S>
 CliffordAcceleration<S> rigidBodyAcceleration(const Quadvector<S>& N, const Bivector<S>& s,
                                               const Bivector<S>& W);
 
-#define SOMA_CL062_EXTERN(S)                                                                  \
+#define SOMA_CLIFFORD_DYNAMICS_EXTERN(S)                                                                  \
   extern template Bivector<S> screwElement<S>(const SE3Tangent<S>&);                          \
   extern template SE3Tangent<S> screwOf<S>(const Bivector<S>&);                               \
   extern template Bivector<S> coScrewElement<S>(const Vec6<S>&);                              \
@@ -203,7 +203,7 @@ CliffordAcceleration<S> rigidBodyAcceleration(const Quadvector<S>& N, const Bive
   extern template Hexavector<S> eFormRight<S>(const Bivector<S>&);                            \
   extern template CliffordAcceleration<S> rigidBodyAcceleration<S>(                           \
       const Quadvector<S>&, const Bivector<S>&, const Bivector<S>&);
-SOMA_FOR_EACH_SCALAR(SOMA_CL062_EXTERN)
-#undef SOMA_CL062_EXTERN
+SOMA_FOR_EACH_SCALAR(SOMA_CLIFFORD_DYNAMICS_EXTERN)
+#undef SOMA_CLIFFORD_DYNAMICS_EXTERN
 
-}  // namespace soma::cl062
+}  // namespace soma::clifford_dynamics

@@ -1,6 +1,6 @@
 #pragma once
 // GF §15.1 (lines 9529–9621): the bi-invariant geometry of SE(3) pulled back to joint space. Definitions; instantiated one scalar per TU by soma_instantiate (cmake/SomaInstantiate.cmake).
-#include "soma/geometry/dyngeom/joint_space_geometry.hpp"
+#include "soma/geometry/riemannian/joint_space_geometry.hpp"
 
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/small_linalg.hpp"

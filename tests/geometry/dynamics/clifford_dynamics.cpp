@@ -1,7 +1,7 @@
 // SB's Cl(0,6,2) formulation against the 6×6 screw formulation (SB §2–6): random bodies and states
 // agree to 1e-12 in double; the shuffle product against SB §4's literal definition; a free body
 // integrated in both formulations.
-#include "soma/geometry/dynamics/cl062.hpp"
+#include "soma/geometry/dynamics/clifford_dynamics.hpp"
 #include "soma/geometry/dynamics/free_body.hpp"
 #include "soma/geometry/dynamics/spatial_inertia.hpp"
 
@@ -13,7 +13,7 @@ using namespace soma;
 using soma::test::rng;
 using soma::test::uniform;
 using soma::test::uniformVec;
-namespace c6 = soma::cl062;
+namespace c6 = soma::clifford_dynamics;
 
 namespace {
 template <class S> SpatialInertia<S> randomBody(std::mt19937_64& g) {
@@ -27,7 +27,7 @@ template <class S, int R, int C> S maxAbs(const Eigen::Matrix<S, R, C>& m) { ret
 }  // namespace
 
 TEST_CASE("SB shuffle: orientation-signed regressive product equals SB §4's definition on all blades",
-          "[dynamics][cl062]") {
+          "[dynamics][clifford_dynamics]") {
   // Every pair of basis blades with grade sum ≥ 8 (the only ones with a nonzero shuffle).
   using D = c6::Dense<double>;
   int compared = 0, nonzero = 0;
@@ -54,7 +54,7 @@ TEST_CASE("SB shuffle: orientation-signed regressive product equals SB §4's def
           c6::signedBlade({c6::a3, c6::a1}).sign);
 }
 
-TEMPLATE_TEST_CASE("Cl(0,6,2) and 6x6 formulations agree on random bodies and states", "[dynamics][cl062]",
+TEMPLATE_TEST_CASE("Cl(0,6,2) and 6x6 formulations agree on random bodies and states", "[dynamics][clifford_dynamics]",
                    double, long double, __float128) {
   using S = TestType;
   auto& g = rng(6202);
@@ -100,7 +100,7 @@ TEMPLATE_TEST_CASE("Cl(0,6,2) and 6x6 formulations agree on random bodies and st
   }
 }
 
-TEMPLATE_TEST_CASE("free body: Cl(0,6,2) and 6x6 trajectories agree; drift of each", "[dynamics][cl062]",
+TEMPLATE_TEST_CASE("free body: Cl(0,6,2) and 6x6 trajectories agree; drift of each", "[dynamics][clifford_dynamics]",
                    double, long double) {
   using S = TestType;
   const SpatialInertia<S> body(S(2), Vec3<S>(S(3) / S(10), S(-2) / S(10), S(1) / S(10)),

@@ -4,8 +4,8 @@
 // closure) and m = n − dim Δ∞, the subalgebra test (full-cycle mobility ⟺ Δ = Δ∞, totally
 // geodesic image), the ten subalgebras of Table 15.1, and — as the paradoxical check — the Bennett
 // 4R loop built from its standard conditions, whose solution set is traced numerically.
-// Definitions and the five-scalar instantiation: geometry/src/dyngeom/mobility_impl.hpp (one scalar per TU).
-#include "soma/geometry/dyngeom/joint_space_geometry.hpp"
+// Definitions and the five-scalar instantiation: geometry/src/riemannian/mobility_impl.hpp (one scalar per TU).
+#include "soma/geometry/riemannian/joint_space_geometry.hpp"
 
 #include <string>
 

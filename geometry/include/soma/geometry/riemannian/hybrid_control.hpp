@@ -9,8 +9,8 @@
 //    λ_j = z_jᵀN₆V̇ + VᵀN₆[z_j, V];
 //  * the hybrid law's error signals q̇_e, q̈_e and the force torques τ^f_i = Σ_{j>n} W_dᵀz_j W_jᵀs_i.
 // Conventions: screws (ω, v); wrenches (moment, force), paired by Wᵀs; {V, P} = −ad(V)ᵀP; H = Ad(g).
-// Definitions and the five-scalar instantiation: geometry/src/dyngeom/hybrid_control_impl.hpp (one scalar per TU).
-#include "soma/geometry/dyngeom/joint_space_geometry.hpp"
+// Definitions and the five-scalar instantiation: geometry/src/riemannian/hybrid_control_impl.hpp (one scalar per TU).
+#include "soma/geometry/riemannian/joint_space_geometry.hpp"
 
 namespace soma {
 

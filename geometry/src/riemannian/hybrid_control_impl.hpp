@@ -1,6 +1,6 @@
 #pragma once
 // GF §15.4: coordinate-free hybrid force/position control. Definitions; instantiated one scalar per TU by soma_instantiate (cmake/SomaInstantiate.cmake).
-#include "soma/geometry/dyngeom/hybrid_control.hpp"
+#include "soma/geometry/riemannian/hybrid_control.hpp"
 
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/small_linalg.hpp"

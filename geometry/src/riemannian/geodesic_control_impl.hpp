@@ -1,6 +1,6 @@
 #pragma once
 // GF §15.3: geodesic, velocity-tracking and accelerating control laws, and their closed loop. Definitions; instantiated one scalar per TU by soma_instantiate (cmake/SomaInstantiate.cmake).
-#include "soma/geometry/dyngeom/geodesic_control.hpp"
+#include "soma/geometry/riemannian/geodesic_control.hpp"
 
 #include "soma/algebra/errors.hpp"
 

@@ -6,7 +6,7 @@
 // Conventions (GF ch. 13–15): screws s = (ω, v), [a, b] = ad(a) b with ad(s) = [[Ω, 0], [V, Ω]];
 // Q₀ = [[0, I], [I, 0]] (the reciprocal product), Q∞ = diag(I₃, 0) (the book's normalisation of the
 // Killing form; the true Killing form is −4 diag(I₃, 0), erratum E4.10 — the scale is absorbed in β).
-// Definitions and the instantiation for the five scalars: geometry/src/dyngeom/invariant_metric.cpp.
+// Definitions and the instantiation for the five scalars: geometry/src/riemannian/invariant_metric.cpp.
 #include "soma/algebra/se3.hpp"
 
 #include <array>

@@ -1,10 +1,10 @@
 // SB's Cl(0,6,2) rigid-body dynamics: the scalar-independent part (SB §4's literal shuffle).
-// The templates are instantiated one scalar per TU by soma_instantiate (cmake/SomaInstantiate.cmake) from cl062_impl.hpp.
-#include "soma/geometry/dynamics/cl062.hpp"
+// The templates are instantiated one scalar per TU by soma_instantiate (cmake/SomaInstantiate.cmake) from clifford_dynamics_impl.hpp.
+#include "soma/geometry/dynamics/clifford_dynamics.hpp"
 
 #include <vector>
 
-namespace soma::cl062 {
+namespace soma::clifford_dynamics {
 
 ShuffleTerm shuffleByDefinition(Blade b, Blade c) {
   // SB's generator order as library indices.
@@ -62,4 +62,4 @@ ShuffleTerm shuffleByDefinition(Blade b, Blade c) {
   return {coeff, coeff == 0 ? Blade(0) : result};
 }
 
-}  // namespace soma::cl062
+}  // namespace soma::clifford_dynamics

@@ -1,6 +1,6 @@
 // GF §15.1, §15.3: invariant metrics, the bi-invariant connection and its curvature on se(3).
 #pragma once
-#include "soma/geometry/dyngeom/invariant_metric.hpp"
+#include "soma/geometry/riemannian/invariant_metric.hpp"
 
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/tolerance.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // GF §15.2: mobility of single-loop mechanisms. Definitions; instantiated one scalar per TU by soma_instantiate (cmake/SomaInstantiate.cmake).
-#include "soma/geometry/dyngeom/mobility.hpp"
+#include "soma/geometry/riemannian/mobility.hpp"
 
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/small_linalg.hpp"

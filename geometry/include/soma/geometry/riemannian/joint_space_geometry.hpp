@@ -7,8 +7,8 @@
 //
 // The co-screws W_i (rows of J⁻¹) need a 6-joint robot at a non-singular configuration: otherwise
 // InvalidInput naming the configuration and σ_min/σ_max of J (never a NaN).
-// Definitions and the five-scalar instantiation: geometry/src/dyngeom/joint_space_geometry_impl.hpp (one scalar per TU: joint_space_geometry_<scalar>.cpp).
-#include "soma/geometry/dyngeom/invariant_metric.hpp"
+// Definitions and the five-scalar instantiation: geometry/src/riemannian/joint_space_geometry_impl.hpp (one scalar per TU: joint_space_geometry_<scalar>.cpp).
+#include "soma/geometry/riemannian/invariant_metric.hpp"
 
 #include <Eigen/Core>
 #include <vector>

@@ -1,12 +1,12 @@
 #pragma once
-// SB's Cl(0,6,2) rigid-body dynamics: the definitions behind cl062.hpp. Included only by the
-// per-scalar instantiation TUs (soma_instantiate, cmake/SomaInstantiate.cmake) and by cl062.cpp
+// SB's Cl(0,6,2) rigid-body dynamics: the definitions behind clifford_dynamics.hpp. Included only by the
+// per-scalar instantiation TUs (soma_instantiate, cmake/SomaInstantiate.cmake) and by clifford_dynamics.cpp
 // (the scalar-independent shuffleByDefinition).
-#include "soma/geometry/dynamics/cl062.hpp"
+#include "soma/geometry/dynamics/clifford_dynamics.hpp"
 
 #include <vector>
 
-namespace soma::cl062 {
+namespace soma::clifford_dynamics {
 
 namespace {
 /// K_j: the e-bivector complementary to screw blade j inside e₁e₂e₃e.
@@ -32,7 +32,7 @@ constexpr std::array<int, 36> formSigns = [] {
     }
   return out;
 }();
-static_assert(formSigns[0] != 0, "cl062: P_0 K_0 ∧ S_0 must have a nonzero shuffle with A");
+static_assert(formSigns[0] != 0, "clifford_dynamics: P_0 K_0 ∧ S_0 must have a nonzero shuffle with A");
 }  // namespace
 
 template <class S> Bivector<S> screwElement(const SE3Tangent<S>& s) {
@@ -186,7 +186,7 @@ CliffordAcceleration<S> rigidBodyAcceleration(const Quadvector<S>& N, const Bive
   return {sdot, res};
 }
 
-#define SOMA_INSTANTIATE_CL062(S) namespace cl062 {                                           \
+#define SOMA_INSTANTIATE_CLIFFORD_DYNAMICS(S) namespace clifford_dynamics {                                           \
   template Bivector<S> screwElement<S>(const SE3Tangent<S>&);                                 \
   template SE3Tangent<S> screwOf<S>(const Bivector<S>&);                                      \
   template Bivector<S> coScrewElement<S>(const Vec6<S>&);                                     \
@@ -212,4 +212,4 @@ CliffordAcceleration<S> rigidBodyAcceleration(const Quadvector<S>& N, const Bive
                                                             const Bivector<S>&,               \
                                                             const Bivector<S>&); }
 
-}  // namespace soma::cl062
+}  // namespace soma::clifford_dynamics

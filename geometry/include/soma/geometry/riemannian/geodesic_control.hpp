@@ -10,9 +10,9 @@
 // each with optional compensation μ_iθ̇_i of viscous joint friction (line 9800). Γ are the book's
 // joint-space Christoffel symbols (JointSpaceGeometry::christoffelBook), W_l the rows of J⁻¹.
 // The plant is SerialDynamics (GF ch. 13, C_i corrected) plus the friction μ_iθ̇_i.
-// Definitions and the five-scalar instantiation: geometry/src/dyngeom/geodesic_control_impl.hpp (one scalar per TU).
+// Definitions and the five-scalar instantiation: geometry/src/riemannian/geodesic_control_impl.hpp (one scalar per TU).
 #include "soma/geometry/dynamics/serial_dynamics.hpp"
-#include "soma/geometry/dyngeom/joint_space_geometry.hpp"
+#include "soma/geometry/riemannian/joint_space_geometry.hpp"
 
 #include <functional>
 

@@ -1,6 +1,6 @@
 // GF §15.2: the Kutzbach–Grübler count (not a template; the templates of mobility.hpp are in
 // mobility_impl.hpp, instantiated per scalar by soma_instantiate).
-#include "soma/geometry/dyngeom/mobility.hpp"
+#include "soma/geometry/riemannian/mobility.hpp"
 
 #include "soma/algebra/errors.hpp"
 
