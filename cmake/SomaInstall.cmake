@@ -98,6 +98,7 @@ soma_package(soma_algebra NAME algebra HEADERS ${PROJECT_SOURCE_DIR}/algebra/inc
 soma_package(soma_geometry NAME geometry HEADERS ${PROJECT_SOURCE_DIR}/geometry/include)
 soma_package(soma_io NAME io HEADERS ${PROJECT_SOURCE_DIR}/io/include OPTIONAL)
 soma_package(soma_render NAME render HEADERS ${PROJECT_SOURCE_DIR}/render/include)
+soma_package(soma_scene NAME scene HEADERS ${PROJECT_SOURCE_DIR}/scene/include OPTIONAL)
 
 # soma::soma: everything, with the aggregate header <soma/soma.hpp> (include/soma/soma.hpp;
 # the test "package: soma.hpp includes every public header" keeps it complete).

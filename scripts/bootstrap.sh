@@ -10,6 +10,7 @@ packages=(
   libcgal-dev libceres-dev libnlopt-cxx-dev libompl-dev libboost-filesystem-dev
   liburdfdom-dev
   phcpack
+  python3 python3-jsonschema
 )
 missing=()
 for p in "${packages[@]}"; do

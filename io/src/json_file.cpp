@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <set>
 #include <type_traits>
 #include <vector>
 
@@ -49,10 +50,12 @@ class DocumentBuilder : public nlohmann::detail::json_sax_dom_parser<json> {
     bool array = false;
     std::size_t index = 0;
     std::string key;
+    std::set<std::string> keys;  // the object's keys so far (uniqueKeys)
   };
 
  public:
-  DocumentBuilder(json& result, std::string origin) : Base(result, true), origin_(std::move(origin)) {}
+  DocumentBuilder(json& result, std::string origin, bool uniqueKeys)
+      : Base(result, true), origin_(std::move(origin)), uniqueKeys_(uniqueKeys) {}
 
   bool null() { return done(Base::null()); }
   bool boolean(bool v) { return done(Base::boolean(v)); }
@@ -68,10 +71,17 @@ class DocumentBuilder : public nlohmann::detail::json_sax_dom_parser<json> {
   bool string(json::string_t& v) { return done(Base::string(v)); }
   bool binary(json::binary_t& v) { return done(Base::binary(v)); }
   bool start_object(std::size_t n) {
-    frames_.push_back({false, 0, {}});
+    frames_.push_back({false, 0, {}, {}});
     return Base::start_object(n);
   }
   bool key(json::string_t& k) {
+    // nlohmann keeps the last of two equal keys: a reader that asks has the repeat rejected.
+    if (uniqueKeys_ && !frames_.back().keys.insert(k).second) {
+      KeyPath at(origin_);  // the object holding the key
+      for (std::size_t i = 0; i + 1 < frames_.size(); ++i) at = frames_[i].array ? at.index(frames_[i].index) : at.key(frames_[i].key);
+      const std::string s = at.str();
+      throw InvalidInput((s.empty() ? "" : s + ": ") + "the key \"" + k + "\" is given twice");
+    }
     frames_.back().key = k;
     return Base::key(k);
   }
@@ -80,7 +90,7 @@ class DocumentBuilder : public nlohmann::detail::json_sax_dom_parser<json> {
     return done(Base::end_object());
   }
   bool start_array(std::size_t n) {
-    frames_.push_back({true, 0, {}});
+    frames_.push_back({true, 0, {}, {}});
     return Base::start_array(n);
   }
   bool end_array() {
@@ -109,21 +119,22 @@ class DocumentBuilder : public nlohmann::detail::json_sax_dom_parser<json> {
     return k.str();
   }
   std::string origin_;
+  bool uniqueKeys_ = false;
   std::vector<Frame> frames_;
 };
 
 }  // namespace
 
-json parseJsonText(const std::string& text, const std::string& origin) {
+json parseJsonText(const std::string& text, const std::string& origin, DuplicateKeys duplicates) {
   json result;
-  DocumentBuilder builder(result, origin);
+  DocumentBuilder builder(result, origin, duplicates == DuplicateKeys::Reject);
   json::sax_parse(text, &builder);
   return result;
 }
 
-json parseJson(const std::string& text, const std::string& origin) {
+json parseJson(const std::string& text, const std::string& origin, DuplicateKeys duplicates) {
   try {
-    return parseJsonText(text, origin);
+    return parseJsonText(text, origin, duplicates);
   } catch (const json::parse_error& e) {
     throw InvalidInput(origin + ": not valid JSON (" + e.what() + ")");
   }

@@ -16,4 +16,8 @@ endif()
 if(DEFINED MATCH AND NOT "${all}" MATCHES "${MATCH}")
   message(FATAL_ERROR "output does not match '${MATCH}'\n--- output ---\n${all}")
 endif()
+# NOMATCH: a regex the output must not match (e.g. a node that must not be built).
+if(DEFINED NOMATCH AND NOT "${NOMATCH}" STREQUAL "" AND "${all}" MATCHES "${NOMATCH}")
+  message(FATAL_ERROR "output matches '${NOMATCH}', which it must not\n--- output ---\n${all}")
+endif()
 message(STATUS "exit ${rc} as expected")

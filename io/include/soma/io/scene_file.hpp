@@ -1,0 +1,117 @@
+#pragma once
+// Reading a scene file (DESIGN §5, issue 19): a researcher's own problem in one JSON file,
+//   {"entities": {NAME: {"kind": ..., ...}}, "outputs": {NAME: {"kind": ..., ...}}}
+// (the rules are also the JSON Schema io/schema/scene.schema.json). Entity kinds:
+//   robot     {"file": ROBOT.json|ROBOT.urdf, "tip"} or inline, exactly a robot file's body;
+//   pose      {"file": POSE.json} or inline, a pose file's body;
+//   platform  {"file": PLATFORM.json} or inline, a platform file's body;
+//   point     {"at": [x, y, z]};
+//   line      {"point": [x, y, z], "direction": [x, y, z]} or {"through": [[x,y,z], [x,y,z]]};
+//   screw     {"coordinates": [ω; v]} or {"point", "direction", "pitch"} (moment v = q × ω + h ω).
+// Output kinds, each naming the entities it uses and, in "needs", the outputs it needs:
+//   ik          {"robot", "pose", "method", "scalar", "bits"}   every posture at the pose;
+//   fk          {"robot", "joints": [...], "scalar", "bits"}    the tool pose (joints in the robot's unit);
+//   stewart     {"platform", "method", "scalar", "bits"}        every posture for the leg lengths;
+//   cuspidal    {"robot", "witness": true|false}                 the 3R/6R cuspidality verdict (double),
+//               its cusp points and a witness path (GF §5.2.3);
+//   cylindroid  {"screws": [A, B], "scalar", "bits"}            pitches and principal screws;
+//   screw-system {"screws": [A, ...], "scalar", "bits"}         the Gibson–Hunt type of their span,
+//               its parameters and canonical frame (GF ch. 8), on 6-vectors;
+//   figure      {"png": FILE, "draw": [ENTITY...], "size": [w, h]}   a PNG of the entities drawn
+//               (every entity when "draw" is absent): robots at the postures of the ik/fk outputs
+//               that use them, platforms at their stewart postures, lines, screws, points, and
+//               the cylindroids of the cylindroid outputs whose screws are drawn.
+// Relative "file" paths resolve against the scene file's folder. Everything is validated before
+// anything is computed (validateScene): unknown kinds and keys, duplicate keys, missing or
+// wrong-kind references, cycles between outputs, wrong types, a scene asking for nothing, and
+// numbers that an output's scalar cannot hold. Each defect is an InvalidInput naming the file and
+// the key path ("scene.json: outputs.solve.robot: no entity named "ur5"").
+// A scene's JSON stays in io: the scene layer gets the typed entities through the accessors below.
+#include "soma/algebra/scalar.hpp"
+#include "soma/algebra/se3.hpp"
+#include "soma/geometry/lines/line.hpp"
+#include "soma/geometry/parallel/stewart.hpp"
+#include "soma/io/robot_file.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace soma::io {
+
+enum class SceneEntityKind { Robot, Pose, Platform, Point, Line, Screw };
+enum class SceneOutputKind { Ik, Fk, Stewart, Cuspidal, Cylindroid, ScrewSystem, Figure };
+std::string_view sceneEntityKindName(SceneEntityKind k);
+std::string_view sceneOutputKindName(SceneOutputKind k);
+
+/// One named entity. Its numbers are read in the scalar an output asks for (sceneRobot<S>, …).
+struct SceneEntity {
+  std::string name;
+  SceneEntityKind kind = SceneEntityKind::Point;
+  std::string where;                         ///< "scene.json: entities.arm", for messages
+  std::string origin, path;                  ///< "scene.json" and "entities.arm"
+  std::optional<std::filesystem::path> file; ///< a robot/pose/platform given by file (resolved)
+  std::string tip;                           ///< URDF only: the chain's tip link
+  std::string body;                          ///< the inline definition (JSON text, read only by io)
+};
+
+/// One named output: what it computes, from which entities, in which scalar.
+struct SceneOutput {
+  std::string name;
+  SceneOutputKind kind = SceneOutputKind::Ik;
+  std::string where;                  ///< "scene.json: outputs.solve"
+  std::string origin, path;           ///< "scene.json" and "outputs.solve"
+  std::string robot, pose, platform;  ///< entity names (those the kind uses)
+  std::vector<std::string> screws;    ///< cylindroid: two screw entities; screw-system: 1 to 6
+  std::vector<std::string> needs;     ///< outputs evaluated before this one
+  std::string method = "auto";        ///< ik, stewart
+  ScalarKind scalar = ScalarKind::Double;
+  int bits = 256;                     ///< mpfr precision
+  std::string joints;                 ///< fk: the joint values (JSON text, read only by io)
+  std::filesystem::path png;          ///< figure: the PNG to write (relative: to the working folder)
+  std::vector<std::string> draw;      ///< figure: the entities drawn (empty: every entity)
+  int width = 1200, height = 900;     ///< figure: the image size in pixels
+  bool witness = true;                ///< cuspidal: plan a witness path when cuspidal
+};
+
+struct SceneFile {
+  std::string origin;  ///< the file's name in messages
+  std::vector<SceneEntity> entities;  ///< in the file's order
+  std::vector<SceneOutput> outputs;   ///< in the file's order
+  [[nodiscard]] const SceneEntity* entity(std::string_view name) const;
+  [[nodiscard]] const SceneOutput* output(std::string_view name) const;
+};
+
+/// Scene JSON text → the checked scene (structure, kinds, keys, references, cycles; files are not
+/// opened). A pure function of the text; relative "file" paths are resolved against `folder`.
+SceneFile parseScene(const std::string& text, const std::string& origin, const std::filesystem::path& folder = {});
+/// Read, parse and validate a scene file (validateScene included).
+SceneFile readScene(const std::filesystem::path& file);
+/// Reads every entity an output uses in that output's scalar (the files, the numbers): a number
+/// the scalar cannot hold, a missing file or a bad body fails here, before anything is computed.
+void validateScene(const SceneFile& scene);
+
+/// The typed entities, in S. Throw InvalidInput (with the entity's key path) on bad content.
+template <class S> RobotFile<S> sceneRobot(const SceneEntity& e);
+template <class S> SE3<S> scenePose(const SceneEntity& e);
+template <class S> StewartPlatform<S> scenePlatform(const SceneEntity& e);
+template <class S> Vec3<S> scenePoint(const SceneEntity& e);
+template <class S> PluckerLine<S> sceneLine(const SceneEntity& e);
+template <class S> Vec6<S> sceneScrew(const SceneEntity& e);
+/// fk: the output's "joints" in S (radians/metres; the robot's angle unit applied).
+template <class S> JointVector<S> sceneJoints(const SceneOutput& o, const RobotFile<S>& robot);
+
+#define SOMA_SCENE_FILE_EXTERN(S)                                                       \
+  extern template RobotFile<S> sceneRobot<S>(const SceneEntity&);                       \
+  extern template SE3<S> scenePose<S>(const SceneEntity&);                              \
+  extern template StewartPlatform<S> scenePlatform<S>(const SceneEntity&);              \
+  extern template Vec3<S> scenePoint<S>(const SceneEntity&);                            \
+  extern template PluckerLine<S> sceneLine<S>(const SceneEntity&);                      \
+  extern template Vec6<S> sceneScrew<S>(const SceneEntity&);                            \
+  extern template JointVector<S> sceneJoints<S>(const SceneOutput&, const RobotFile<S>&);
+SOMA_FOR_EACH_SCALAR(SOMA_SCENE_FILE_EXTERN)
+#undef SOMA_SCENE_FILE_EXTERN
+
+}  // namespace soma::io

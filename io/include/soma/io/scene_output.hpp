@@ -1,0 +1,58 @@
+#pragma once
+// The JSON of a scene's outputs (`soma scene --json`, docs/cli.md): one object per output with the
+// fields every numeric output has, as the CLI's commands print them —
+//   "output" (its name), "kind", "method", "scalar", "seconds", "residual" (the largest residual
+//   of what it computed), "ok" (every residual within √ε of the scalar)
+// and the kind's own fields (ik: "count", "expected_count", "certified", "solutions"; fk: "pose";
+// stewart: "count", "expected_count", "certified", "solutions"; cylindroid: "pitches",
+// "principal_screws", "centre", "frame"; screw-system: "type", "type_name", "dimension", "via_reciprocal", "parameters", "frame",
+// "nearest_other_type", "boundary_distance"; figure: "png", "width", "height", "drawn"). Angles are radians unless the robot's file says degrees.
+#include "soma/geometry/lines/cylindroid.hpp"
+#include "soma/geometry/parallel/solve_stewart.hpp"
+#include "soma/geometry/screws/identification.hpp"
+#include "soma/geometry/serial/ik.hpp"
+#include "soma/io/scene_file.hpp"
+
+#include <string>
+
+namespace soma::io {
+
+template <class S>
+std::string ikOutputJson(const SceneOutput& o, const RobotFile<S>& robot, const IkSolution<S>& sol, bool ok);
+template <class S>
+std::string fkOutputJson(const SceneOutput& o, const RobotFile<S>& robot, const JointVector<S>& q, const SE3<S>& pose,
+                         double seconds);
+template <class S> std::string stewartOutputJson(const SceneOutput& o, const StewartSolution<S>& sol, bool ok);
+template <class S>
+std::string cylindroidOutputJson(const SceneOutput& o, const Cylindroid<S>& c, const S& residual, double seconds, bool ok);
+
+template <class S>
+std::string screwSystemOutputJson(const SceneOutput& o, const ScrewSystemIdentification<S>& id, double seconds, bool ok);
+/// cuspidal (GF §5.2.3): what analyseCuspidality found, as plain values (io does not link the
+/// cuspidal library). Fields "cuspidal", "six_r", "cusp_count", "aspect_count" and "witness":
+/// {"found", "certified", "target", "start", "goal" (radians), "points", "note"}.
+struct CuspidalRecord {
+  std::string method;
+  bool cuspidal = false, sixR = false;
+  int cuspCount = 0, aspectCount = 0;
+  bool witnessFound = false, witnessCertified = false;
+  std::vector<double> witnessTarget, witnessStart, witnessGoal;
+  int witnessPoints = 0;
+  std::string witnessNote;
+  double seconds = 0, residual = 0;
+};
+std::string cuspidalOutputJson(const SceneOutput& o, const CuspidalRecord& c);
+/// figure: "png", "width", "height", "drawn" (the entities drawn), "seconds" (the render).
+std::string figureOutputJson(const SceneOutput& o, const std::vector<std::string>& drawn, double seconds);
+
+#define SOMA_SCENE_OUTPUT_EXTERN(S)                                                                          \
+  extern template std::string ikOutputJson<S>(const SceneOutput&, const RobotFile<S>&, const IkSolution<S>&, bool); \
+  extern template std::string fkOutputJson<S>(const SceneOutput&, const RobotFile<S>&, const JointVector<S>&,    \
+                                              const SE3<S>&, double);                                         \
+  extern template std::string stewartOutputJson<S>(const SceneOutput&, const StewartSolution<S>&, bool);        \
+  extern template std::string cylindroidOutputJson<S>(const SceneOutput&, const Cylindroid<S>&, const S&, double, bool); \
+  extern template std::string screwSystemOutputJson<S>(const SceneOutput&, const ScrewSystemIdentification<S>&, double, bool);
+SOMA_FOR_EACH_SCALAR(SOMA_SCENE_OUTPUT_EXTERN)
+#undef SOMA_SCENE_OUTPUT_EXTERN
+
+}  // namespace soma::io

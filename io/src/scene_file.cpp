@@ -1,0 +1,411 @@
+// The scene reader's structure checks (scene_file.hpp): kinds, keys, references, cycles. The
+// typed entities (numbers in a scalar) are scene_file_impl.hpp.
+#include "soma/io/scene_file.hpp"
+
+#include "soma/algebra/errors.hpp"
+#include "soma/io/json_file.hpp"
+#include "soma/geometry/parallel/solve_stewart.hpp"
+#include "soma/geometry/serial/ik.hpp"
+#include "soma/io/pose_file.hpp"
+#include "soma/io/scene_output.hpp"
+#include "soma/io/urdf_file.hpp"
+
+#include <functional>
+#include <map>
+
+namespace soma::io {
+
+namespace {
+using json = nlohmann::json;
+
+struct EntityKindInfo {
+  SceneEntityKind kind;
+  std::string_view name;
+};
+constexpr EntityKindInfo kEntityKinds[] = {
+    {SceneEntityKind::Robot, "robot"}, {SceneEntityKind::Pose, "pose"},   {SceneEntityKind::Platform, "platform"},
+    {SceneEntityKind::Point, "point"}, {SceneEntityKind::Line, "line"},   {SceneEntityKind::Screw, "screw"}};
+struct OutputKindInfo {
+  SceneOutputKind kind;
+  std::string_view name;
+};
+constexpr OutputKindInfo kOutputKinds[] = {{SceneOutputKind::Ik, "ik"},
+                                           {SceneOutputKind::Fk, "fk"},
+                                           {SceneOutputKind::Stewart, "stewart"},
+                                           {SceneOutputKind::Cuspidal, "cuspidal"},
+                                           {SceneOutputKind::Cylindroid, "cylindroid"},
+                                           {SceneOutputKind::ScrewSystem, "screw-system"},
+                                           {SceneOutputKind::Figure, "figure"}};
+
+template <class Table> std::string kindList(const Table& t) {
+  std::string s;
+  for (const auto& k : t) s += (s.empty() ? "" : ", ") + std::string(k.name);
+  return s;
+}
+
+std::string inQuotes(std::string_view s) { return "\"" + std::string(s) + "\""; }
+
+std::string stringField(const json& j, const char* key, const KeyPath& where) {
+  const json& v = j[key];
+  if (!v.is_string()) throw InvalidInput(where.key(key).str() + ": expected a string");
+  return v.get<std::string>();
+}
+
+// The "kind" of an entity or output (`what`), one of the table's names.
+template <class Table> auto kindOf(const json& j, const KeyPath& where, const Table& table, const std::string& what) {
+  if (!j.is_object()) throw InvalidInput(where.str() + ": an " + what + " must be a JSON object");
+  if (!j.contains("kind")) throw InvalidInput(where.str() + ": missing \"kind\" (one of " + kindList(table) + ")");
+  const std::string kind = stringField(j, "kind", where);
+  for (const auto& k : table)
+    if (k.name == kind) return k.kind;
+  throw InvalidInput(where.key("kind").str() + ": unknown " + what + " kind " + inQuotes(kind) + " (one of " +
+                     kindList(table) + ")");
+}
+
+// An entity: "kind" plus a file reference or an inline body (kept as text, read in each scalar).
+SceneEntity parseEntity(const std::string& name, const json& j, const std::string& origin, const std::string& path,
+                        const std::filesystem::path& folder) {
+  const KeyPath where = KeyPath(origin).key(path);
+  SceneEntity e;
+  e.kind = kindOf(j, where, kEntityKinds, "entity");
+  e.name = name;
+  e.where = where.str();
+  e.origin = origin;
+  e.path = path;
+  json body = j;
+  body.erase("kind");
+  const bool byFile = e.kind == SceneEntityKind::Robot || e.kind == SceneEntityKind::Pose ||
+                      e.kind == SceneEntityKind::Platform;
+  if (byFile && body.contains("file")) {
+    if (e.kind == SceneEntityKind::Robot) checkKeys(body, {"file", "tip"}, where.str(), "(a robot by file has file, tip)");
+    else checkKeys(body, {"file"}, where.str(), "(an entity given by file has only kind and file)");
+    const std::filesystem::path f = stringField(body, "file", where);
+    e.file = f.is_absolute() || folder.empty() ? f : folder / f;
+    if (body.contains("tip")) e.tip = stringField(body, "tip", where);
+    return e;
+  }
+  switch (e.kind) {
+    case SceneEntityKind::Robot:
+    case SceneEntityKind::Pose:
+    case SceneEntityKind::Platform: break;  // the robot, pose and platform readers check the body
+    case SceneEntityKind::Point: checkKeys(body, {"at"}, where.str(), "(a point has \"at\": [x, y, z])"); break;
+    case SceneEntityKind::Line:
+      checkKeys(body, {"point", "direction", "through"}, where.str(),
+                "(a line has \"point\" and \"direction\", or \"through\": two points)");
+      break;
+    case SceneEntityKind::Screw:
+      checkKeys(body, {"coordinates", "point", "direction", "pitch"}, where.str(),
+                "(a screw has \"coordinates\": [ω; v], or \"point\", \"direction\" and \"pitch\")");
+      break;
+  }
+  e.body = body.dump();
+  return e;
+}
+
+std::string entityRef(const json& j, const char* key, const KeyPath& where) {
+  if (!j.contains(key)) throw InvalidInput(where.str() + ": missing \"" + key + "\" (the name of an entity)");
+  return stringField(j, key, where);
+}
+
+SceneOutput parseOutput(const std::string& name, const json& j, const std::string& origin, const std::string& path) {
+  const KeyPath where = KeyPath(origin).key(path);
+  SceneOutput o;
+  o.kind = kindOf(j, where, kOutputKinds, "output");
+  o.name = name;
+  o.where = where.str();
+  o.origin = origin;
+  o.path = path;
+  switch (o.kind) {
+    case SceneOutputKind::Ik:
+      checkKeys(j, {"kind", "robot", "pose", "method", "scalar", "bits", "needs"}, where.str(),
+                "(an ik output has robot, pose, method, scalar, bits, needs)");
+      o.robot = entityRef(j, "robot", where);
+      o.pose = entityRef(j, "pose", where);
+      break;
+    case SceneOutputKind::Fk:
+      checkKeys(j, {"kind", "robot", "joints", "scalar", "bits", "needs"}, where.str(),
+                "(an fk output has robot, joints, scalar, bits, needs)");
+      o.robot = entityRef(j, "robot", where);
+      if (!j.contains("joints")) throw InvalidInput(where.str() + ": missing \"joints\" (the joint values)");
+      if (!j["joints"].is_array() || j["joints"].empty())
+        throw InvalidInput(where.key("joints").str() + ": expected a non-empty array of numbers");
+      o.joints = j["joints"].dump();
+      break;
+    case SceneOutputKind::Stewart:
+      checkKeys(j, {"kind", "platform", "method", "scalar", "bits", "needs"}, where.str(),
+                "(a stewart output has platform, method, scalar, bits, needs)");
+      o.platform = entityRef(j, "platform", where);
+      break;
+    case SceneOutputKind::Cylindroid: {
+      checkKeys(j, {"kind", "screws", "scalar", "bits", "needs"}, where.str(),
+                "(a cylindroid output has screws, scalar, bits, needs)");
+      if (!j.contains("screws")) throw InvalidInput(where.str() + ": missing \"screws\" (two screw entities)");
+      const json& s = j["screws"];
+      if (!s.is_array() || s.size() != 2)
+        throw InvalidInput(where.key("screws").str() + ": expected the names of two screw entities");
+      for (std::size_t i = 0; i < 2; ++i) {
+        if (!s[i].is_string()) throw InvalidInput(where.key("screws").index(i).str() + ": expected a string");
+        o.screws.push_back(s[i].get<std::string>());
+      }
+      break;
+    }
+    case SceneOutputKind::Cuspidal:
+      checkKeys(j, {"kind", "robot", "witness", "needs"}, where.str(),
+                "(a cuspidal output has robot, witness, needs; it works in double)");
+      o.robot = entityRef(j, "robot", where);
+      if (j.contains("witness")) {
+        if (!j["witness"].is_boolean()) throw InvalidInput(where.key("witness").str() + ": expected true or false");
+        o.witness = j["witness"].get<bool>();
+      }
+      break;
+    case SceneOutputKind::ScrewSystem: {
+      checkKeys(j, {"kind", "screws", "scalar", "bits", "needs"}, where.str(),
+                "(a screw-system output has screws, scalar, bits, needs)");
+      if (!j.contains("screws")) throw InvalidInput(where.str() + ": missing \"screws\" (1 to 6 screw entities)");
+      const json& s = j["screws"];
+      if (!s.is_array() || s.empty() || s.size() > 6)
+        throw InvalidInput(where.key("screws").str() + ": expected the names of 1 to 6 screw entities");
+      for (std::size_t i = 0; i < s.size(); ++i) {
+        if (!s[i].is_string()) throw InvalidInput(where.key("screws").index(i).str() + ": expected a string");
+        o.screws.push_back(s[i].get<std::string>());
+      }
+      break;
+    }
+    case SceneOutputKind::Figure: {
+      checkKeys(j, {"kind", "png", "draw", "size", "needs"}, where.str(),
+                "(a figure output has png, draw, size, needs)");
+      if (!j.contains("png")) throw InvalidInput(where.str() + ": missing \"png\" (the PNG file to write)");
+      o.png = stringField(j, "png", where);
+      if (o.png.empty()) throw InvalidInput(where.key("png").str() + ": an empty file name");
+      if (j.contains("draw")) {
+        const json& d = j["draw"];
+        if (!d.is_array() || d.empty()) throw InvalidInput(where.key("draw").str() + ": expected a non-empty array of entity names");
+        for (std::size_t i = 0; i < d.size(); ++i) {
+          if (!d[i].is_string()) throw InvalidInput(where.key("draw").index(i).str() + ": expected a string");
+          o.draw.push_back(d[i].get<std::string>());
+        }
+      }
+      if (j.contains("size")) {
+        const json& z = j["size"];
+        if (!z.is_array() || z.size() != 2 || !z[0].is_number_integer() || !z[1].is_number_integer() ||
+            z[0].get<long long>() < 16 || z[1].get<long long>() < 16 || z[0].get<long long>() > 8192 ||
+            z[1].get<long long>() > 8192)
+          throw InvalidInput(where.key("size").str() + ": expected [width, height], integers in [16, 8192]");
+        o.width = z[0].get<int>();
+        o.height = z[1].get<int>();
+      }
+      break;
+    }
+  }
+  if (j.contains("method")) o.method = stringField(j, "method", where);
+  if (o.kind == SceneOutputKind::Ik && !parseIkMethod(o.method))
+    throw InvalidInput(where.key("method").str() + ": " + inQuotes(o.method) + " is not one of " + ikMethodNames());
+  if (o.kind == SceneOutputKind::Stewart && !parseStewartMethod(o.method))
+    throw InvalidInput(where.key("method").str() + ": " + inQuotes(o.method) + " is not one of " + stewartMethodNames());
+  if (j.contains("scalar")) {
+    const std::string s = stringField(j, "scalar", where);
+    const auto k = parseScalarKind(s);
+    if (!k) throw InvalidInput(where.key("scalar").str() + ": " + inQuotes(s) + " is not one of " + scalarNames());
+    o.scalar = *k;
+  }
+  if (j.contains("bits")) {
+    const json& b = j["bits"];
+    if (!b.is_number_integer() || b.get<long long>() < 16 || b.get<long long>() > 100000)
+      throw InvalidInput(where.key("bits").str() + ": expected an integer in [16, 100000] (mpfr's precision)");
+    o.bits = b.get<int>();
+  }
+  if (j.contains("needs")) {
+    const json& n = j["needs"];
+    if (!n.is_array()) throw InvalidInput(where.key("needs").str() + ": expected an array of output names");
+    for (std::size_t i = 0; i < n.size(); ++i) {
+      if (!n[i].is_string()) throw InvalidInput(where.key("needs").index(i).str() + ": expected a string");
+      o.needs.push_back(n[i].get<std::string>());
+    }
+  }
+  return o;
+}
+
+// Each name an output uses exists and is of the kind it is used as.
+void checkReference(const SceneFile& s, const SceneOutput& o, const std::string& key, const std::string& name,
+                    SceneEntityKind want) {
+  const SceneEntity* e = s.entity(name);
+  if (!e) throw InvalidInput(o.where + "." + key + ": no entity named " + inQuotes(name));
+  if (e->kind != want)
+    throw InvalidInput(o.where + "." + key + ": " + inQuotes(name) + " is a " + std::string(sceneEntityKindName(e->kind)) +
+                       ", expected a " + std::string(sceneEntityKindName(want)));
+}
+
+void checkCycles(const SceneFile& s) {
+  std::map<std::string, int> state;  // 0 new, 1 on the path, 2 done
+  std::vector<std::string> path;
+  std::function<void(const SceneOutput&)> visit = [&](const SceneOutput& o) {
+    state[o.name] = 1;
+    path.push_back(o.name);
+    for (const std::string& n : o.needs) {
+      const SceneOutput* d = s.output(n);
+      if (state[n] == 1) {
+        std::string cycle;
+        bool on = false;
+        for (const std::string& p : path) {
+          if (p == n) on = true;
+          if (on) cycle += p + " → ";
+        }
+        throw InvalidInput(o.where + ".needs: a cycle between outputs: " + cycle + n);
+      }
+      if (state[n] == 0) visit(*d);
+    }
+    path.pop_back();
+    state[o.name] = 2;
+  };
+  for (const SceneOutput& o : s.outputs)
+    if (state[o.name] == 0) visit(o);
+}
+
+}  // namespace
+
+std::string cuspidalOutputJson(const SceneOutput& o, const CuspidalRecord& c) {
+  json j;
+  j["output"] = o.name;
+  j["kind"] = "cuspidal";
+  j["method"] = c.method;
+  j["scalar"] = "double";
+  j["seconds"] = c.seconds;
+  j["residual"] = c.residual;
+  j["ok"] = true;
+  j["robot"] = o.robot;
+  j["cuspidal"] = c.cuspidal;
+  j["six_r"] = c.sixR;
+  j["cusp_count"] = c.cuspCount;
+  j["aspect_count"] = c.aspectCount;
+  json w;
+  w["found"] = c.witnessFound;
+  w["certified"] = c.witnessCertified;
+  w["target"] = c.witnessTarget;
+  w["start"] = c.witnessStart;
+  w["goal"] = c.witnessGoal;
+  w["points"] = c.witnessPoints;
+  w["note"] = c.witnessNote;
+  j["witness"] = w;
+  return j.dump();
+}
+
+std::string figureOutputJson(const SceneOutput& o, const std::vector<std::string>& drawn, double seconds) {
+  json j;
+  j["output"] = o.name;
+  j["kind"] = "figure";
+  j["method"] = "OSMesa";
+  j["scalar"] = "double";
+  j["seconds"] = seconds;
+  j["residual"] = 0;
+  j["ok"] = true;
+  j["png"] = o.png.string();
+  j["width"] = o.width;
+  j["height"] = o.height;
+  j["drawn"] = drawn;
+  return j.dump();
+}
+
+std::string_view sceneEntityKindName(SceneEntityKind k) {
+  for (const auto& e : kEntityKinds)
+    if (e.kind == k) return e.name;
+  return "?";
+}
+std::string_view sceneOutputKindName(SceneOutputKind k) {
+  for (const auto& e : kOutputKinds)
+    if (e.kind == k) return e.name;
+  return "?";
+}
+
+const SceneEntity* SceneFile::entity(std::string_view name) const {
+  for (const SceneEntity& e : entities)
+    if (e.name == name) return &e;
+  return nullptr;
+}
+const SceneOutput* SceneFile::output(std::string_view name) const {
+  for (const SceneOutput& o : outputs)
+    if (o.name == name) return &o;
+  return nullptr;
+}
+
+SceneFile parseScene(const std::string& text, const std::string& origin, const std::filesystem::path& folder) {
+  const json j = parseJson(text, origin, DuplicateKeys::Reject);
+  const KeyPath root(origin);
+  if (!j.is_object()) throw InvalidInput(origin + ": a scene must be a JSON object");
+  checkKeys(j, {"entities", "outputs", "description"}, origin, "(a scene has entities, outputs, description)");
+  SceneFile s;
+  s.origin = origin;
+  if (j.contains("description") && !j["description"].is_string())
+    throw InvalidInput(root.key("description").str() + ": expected a string");
+  if (j.contains("entities")) {
+    if (!j["entities"].is_object()) throw InvalidInput(root.key("entities").str() + ": expected an object {NAME: entity}");
+    // nlohmann's object is ordered by key; the file's order is not kept (the names say what is what).
+    for (const auto& [name, e] : j["entities"].items())
+      s.entities.push_back(parseEntity(name, e, origin, KeyPath().key("entities").key(name).str(), folder));
+  }
+  if (!j.contains("outputs") || !j["outputs"].is_object() || j["outputs"].empty())
+    throw InvalidInput(root.key("outputs").str() + ": the scene asks for nothing (give at least one output)");
+  for (const auto& [name, o] : j["outputs"].items())
+    s.outputs.push_back(parseOutput(name, o, origin, KeyPath().key("outputs").key(name).str()));
+  for (const SceneOutput& o : s.outputs) {
+    if (!o.robot.empty()) checkReference(s, o, "robot", o.robot, SceneEntityKind::Robot);
+    if (!o.pose.empty()) checkReference(s, o, "pose", o.pose, SceneEntityKind::Pose);
+    if (!o.platform.empty()) checkReference(s, o, "platform", o.platform, SceneEntityKind::Platform);
+    for (std::size_t i = 0; i < o.screws.size(); ++i)
+      checkReference(s, o, "screws[" + std::to_string(i) + "]", o.screws[i], SceneEntityKind::Screw);
+    for (std::size_t i = 0; i < o.draw.size(); ++i)
+      if (!s.entity(o.draw[i]))
+        throw InvalidInput(o.where + ".draw[" + std::to_string(i) + "]: no entity named " + inQuotes(o.draw[i]));
+    for (std::size_t i = 0; i < o.needs.size(); ++i)
+      if (!s.output(o.needs[i]))
+        throw InvalidInput(o.where + ".needs[" + std::to_string(i) + "]: no output named " + inQuotes(o.needs[i]));
+  }
+  checkCycles(s);
+  return s;
+}
+
+void validateScene(const SceneFile& s) {
+  // A figure draws its entities in double: each is read once here.
+  for (const SceneOutput& o : s.outputs) {
+    if (o.kind != SceneOutputKind::Figure) continue;
+    for (const SceneEntity& e : s.entities) {
+      bool drawn = o.draw.empty();
+      for (const std::string& d : o.draw) drawn = drawn || d == e.name;
+      if (!drawn) continue;
+      switch (e.kind) {
+        case SceneEntityKind::Robot: (void)sceneRobot<double>(e); break;
+        case SceneEntityKind::Pose: (void)scenePose<double>(e); break;
+        case SceneEntityKind::Platform: (void)scenePlatform<double>(e); break;
+        case SceneEntityKind::Point: (void)scenePoint<double>(e); break;
+        case SceneEntityKind::Line: (void)sceneLine<double>(e); break;
+        case SceneEntityKind::Screw: (void)sceneScrew<double>(e); break;
+      }
+    }
+  }
+  for (const SceneOutput& o : s.outputs) {
+    setMpfrBits(o.bits);
+    withScalar(o.scalar, [&]<class S>() {
+      switch (o.kind) {
+        case SceneOutputKind::Ik:
+          (void)sceneRobot<S>(*s.entity(o.robot));
+          (void)scenePose<S>(*s.entity(o.pose));
+          break;
+        case SceneOutputKind::Fk: (void)sceneJoints<S>(o, sceneRobot<S>(*s.entity(o.robot))); break;
+        case SceneOutputKind::Stewart: (void)scenePlatform<S>(*s.entity(o.platform)); break;
+        case SceneOutputKind::Cuspidal: (void)sceneRobot<S>(*s.entity(o.robot)); break;
+        case SceneOutputKind::Cylindroid:
+        case SceneOutputKind::ScrewSystem:
+          for (const std::string& n : o.screws) (void)sceneScrew<S>(*s.entity(n));
+          break;
+        case SceneOutputKind::Figure: break;  // its entities were read in double above
+      }
+    });
+  }
+}
+
+SceneFile readScene(const std::filesystem::path& file) {
+  SceneFile s = parseScene(readTextFile(file, "scene"), file.string(), file.parent_path());
+  validateScene(s);
+  return s;
+}
+
+}  // namespace soma::io

@@ -1,0 +1,368 @@
+// The scene graph's wiring (scene_graph.hpp): each node built once, on demand, traced.
+#include "soma/scene/scene_graph.hpp"
+
+#include "soma/algebra/errors.hpp"
+#include "soma/algebra/tolerance.hpp"
+#include "soma/geometry/cuspidal/cuspidality.hpp"
+#include "soma/geometry/lines/cylindroid.hpp"
+#include "soma/geometry/lines/screw_axis.hpp"
+#include "soma/geometry/parallel/solve_stewart.hpp"
+#include "soma/geometry/screws/identification.hpp"
+#include "soma/geometry/serial/ik.hpp"
+#include "soma/io/scene_output.hpp"
+#include "soma/render/renderer.hpp"
+#include "soma/scene/tessellation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <memory>
+
+#include <unistd.h>
+
+namespace soma::scene {
+
+bool SceneResult::ok() const {
+  for (const OutputResult& o : outputs)
+    if (!o.ok) return false;
+  return true;
+}
+
+const OutputResult* SceneResult::output(std::string_view name) const {
+  for (const OutputResult& o : outputs)
+    if (o.name == name) return &o;
+  return nullptr;
+}
+
+bool SceneResult::built(std::string_view id) const {
+  for (const TraceEntry& t : trace)
+    if (t.id == id) return true;
+  return false;
+}
+
+std::string outputNodeId(const io::SceneOutput& o) { return std::string(io::sceneOutputKindName(o.kind)) + ":" + o.name; }
+
+namespace {
+
+// "[double]", "[mpfr256]": an entity read in two scalars is two nodes.
+template <class S> std::string scalarTag() {
+  std::string s(scalarName<S>());
+  if constexpr (std::is_same_v<S, mpreal>) s += std::to_string(mpfr::mpreal::get_default_prec());
+  return "[" + s + "]";
+}
+
+std::string via(const std::string& reason, const std::string& id) { return reason + " via " + id; }
+
+template <class S> bool withinSqrtEps(const S& r) { return r <= Tolerance<S>::sqrtEpsilon(); }
+
+template <class S> std::vector<double> doubles(const JointVector<S>& q) {
+  std::vector<double> v;
+  for (int i = 0; i < q.size(); ++i) v.push_back(toDouble(q(i)));
+  return v;
+}
+
+// The figure's extent for lines, screws and cylindroid patches (world units: the scenes' metres).
+constexpr double kFigureHalfLength = 1.0;
+
+}  // namespace
+
+SceneGraph::SceneGraph(io::SceneFile scene) : scene_(std::move(scene)) {}
+
+template <class T, class F> const T& SceneGraph::node(const std::string& id, const std::string& reason, F&& build) {
+  if (const auto it = nodes_.find(id); it != nodes_.end()) return *std::any_cast<const std::shared_ptr<T>&>(it->second);
+  const auto t0 = std::chrono::steady_clock::now();
+  auto value = std::make_shared<T>(build(id));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  nodes_.emplace(id, value);
+  if (trace_) trace_->push_back({id, seconds, reason});
+  return *value;
+}
+
+template <class S> const io::RobotFile<S>& SceneGraph::robot(const std::string& name, const std::string& reason) {
+  return node<io::RobotFile<S>>("robot:" + name + scalarTag<S>(), reason,
+                                [&](const std::string&) { return io::sceneRobot<S>(*scene_.entity(name)); });
+}
+
+template <class S> const SE3<S>& SceneGraph::pose(const std::string& name, const std::string& reason) {
+  return node<SE3<S>>("pose:" + name + scalarTag<S>(), reason,
+                      [&](const std::string&) { return io::scenePose<S>(*scene_.entity(name)); });
+}
+
+template <class S> const StewartPlatform<S>& SceneGraph::platform(const std::string& name, const std::string& reason) {
+  return node<StewartPlatform<S>>("platform:" + name + scalarTag<S>(), reason,
+                                  [&](const std::string&) { return io::scenePlatform<S>(*scene_.entity(name)); });
+}
+
+template <class S> const Vec6<S>& SceneGraph::screw(const std::string& name, const std::string& reason) {
+  return node<Vec6<S>>("screw:" + name + scalarTag<S>(), reason,
+                       [&](const std::string&) { return io::sceneScrew<S>(*scene_.entity(name)); });
+}
+
+template <class S> OutputResult SceneGraph::compute(const io::SceneOutput& o, const std::string& reason) {
+  OutputResult r;
+  r.name = o.name;
+  switch (o.kind) {
+    case io::SceneOutputKind::Ik: {
+      const auto& rf = robot<S>(o.robot, reason);
+      const auto& target = pose<S>(o.pose, reason);
+      IkOptions options;
+      const auto m = parseIkMethod(o.method);
+      if (!m) throw InvalidInput(o.where + ".method: \"" + o.method + "\" is not one of " + ikMethodNames());
+      options.method = *m;
+      const IkSolution<S> sol = solveIk<S>(rf.robot, target, options);
+      for (const S& e : sol.residuals) r.ok = r.ok && withinSqrtEps(e);
+      r.json = io::ikOutputJson<S>(o, rf, sol, r.ok);
+      for (const JointVector<S>& q : sol.postures) r.joints.push_back(doubles(q));
+      break;
+    }
+    case io::SceneOutputKind::Fk: {
+      const auto& rf = robot<S>(o.robot, reason);
+      const JointVector<S> q = io::sceneJoints<S>(o, rf);
+      const auto t0 = std::chrono::steady_clock::now();
+      const SE3<S> g = rf.robot.fk(q);
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      r.json = io::fkOutputJson<S>(o, rf, q, g, seconds);
+      r.joints.push_back(doubles(q));
+      break;
+    }
+    case io::SceneOutputKind::Stewart: {
+      const auto& P = platform<S>(o.platform, reason);
+      StewartOptions options;
+      const auto m = parseStewartMethod(o.method);
+      if (!m) throw InvalidInput(o.where + ".method: \"" + o.method + "\" is not one of " + stewartMethodNames());
+      options.method = *m;
+      const StewartSolution<S> sol = solveStewart<S>(P, options);
+      for (const S& e : sol.residuals) r.ok = r.ok && withinSqrtEps(e);
+      r.json = io::stewartOutputJson<S>(o, sol, r.ok);
+      for (const SE3<S>& g : sol.postures) r.poses.push_back(SE3<double>(SO3<double>::fromMatrix(castMatrix<double>(Mat3<S>(g.rotation()))),
+                                                                        castMatrix<double>(Vec3<S>(g.translation()))));
+      break;
+    }
+    case io::SceneOutputKind::Figure: break;  // SceneGraph::figure, in double
+    case io::SceneOutputKind::Cuspidal: {
+      // GF §5.2.3 in double (the analysis escalates its cusp points itself when ill-conditioned).
+      if constexpr (std::is_same_v<S, double>) {
+        const auto& rf = robot<double>(o.robot, reason);
+        CuspidalOptions options;
+        options.witness = o.witness;
+        const CuspidalAnalysis a = analyseCuspidality(rf.robot, options);
+        io::CuspidalRecord c;
+        c.method = a.method;
+        c.cuspidal = a.cuspidal;
+        c.sixR = a.sixR;
+        c.cuspCount = int(a.cusps.cusps.size());
+        c.aspectCount = a.aspectMap.count();
+        c.witnessFound = a.witness.found;
+        c.witnessCertified = a.witness.certified;
+        c.witnessPoints = int(a.witness.path.size());
+        c.witnessNote = a.witness.note;
+        c.seconds = a.seconds;
+        if (a.witness.found) {
+          c.witnessTarget = {a.witness.target(0), a.witness.target(1), a.witness.target(2)};
+          c.witnessStart = doubles(a.witness.start);
+          c.witnessGoal = doubles(a.witness.goal);
+          c.residual = std::max(a.witness.startResidual, a.witness.goalResidual);
+          r.joints = {c.witnessStart, c.witnessGoal};
+          for (const Eigen::Vector3d& q : a.witness.path) r.path.push_back({q(0), q(1), q(2)});
+        }
+        r.ok = withinSqrtEps(c.residual);
+        r.json = io::cuspidalOutputJson(o, c);
+      }
+      break;
+    }
+    case io::SceneOutputKind::ScrewSystem: {
+      // The 6-vector form (GF ch. 8): no Clifford algebra is built for a screw-system question.
+      ScrewMatX<S> generators(6, Eigen::Index(o.screws.size()));
+      for (std::size_t i = 0; i < o.screws.size(); ++i) generators.col(Eigen::Index(i)) = screw<S>(o.screws[i], reason);
+      const auto t0 = std::chrono::steady_clock::now();
+      const ScrewSystemIdentification<S> id = identifyScrewSystem<S>(generators);
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      r.ok = withinSqrtEps(id.frameResidual);
+      r.json = io::screwSystemOutputJson<S>(o, id, seconds, r.ok);
+      break;
+    }
+    case io::SceneOutputKind::Cylindroid: {
+      const Vec6<S>& a = screw<S>(o.screws[0], reason);
+      const Vec6<S>& b = screw<S>(o.screws[1], reason);
+      const auto t0 = std::chrono::steady_clock::now();
+      const Cylindroid<S> c = [&] {
+        try {
+          return Cylindroid<S>(a, b);
+        } catch (const InvalidInput& e) {
+          throw InvalidInput(o.where + ".screws: " + e.what());
+        }
+      }();
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      // The pencil's pitch distribution at each given screw reproduces that screw's own pitch
+      // (GF §6.5.2, GF-6.5.2-cylindroid-principal-form), relative to the larger pitch in size.
+      using std::abs;
+      S residual(0);
+      for (const Vec6<S>* s : {&a, &b}) {
+        const S h = screwPitch(*s);
+        const S scale = std::max(S(1), std::max(abs(c.pitchMax()), abs(c.pitchMin())));
+        residual = std::max(residual, S(abs(c.pitch(c.angleOf(*s)) - h) / scale));
+      }
+      r.ok = withinSqrtEps(residual);
+      r.json = io::cylindroidOutputJson<S>(o, c, residual, seconds, r.ok);
+      break;
+    }
+  }
+  return r;
+}
+
+const OutputResult& SceneGraph::output(const io::SceneOutput& o, const std::string& reason) {
+  return node<OutputResult>(outputNodeId(o), reason, [&](const std::string& id) {
+    for (const std::string& n : o.needs) (void)output(*scene_.output(n), via(reason, id));
+    if (o.kind == io::SceneOutputKind::Figure) return figure(o, via(reason, id));
+    if (o.kind == io::SceneOutputKind::Cuspidal) return compute<double>(o, via(reason, id));
+    setMpfrBits(o.bits);
+    return withScalar(o.scalar, [&]<class S>() { return compute<S>(o, via(reason, id)); });
+  });
+}
+
+OutputResult SceneGraph::figure(const io::SceneOutput& o, const std::string& reason) {
+  auto drawn = [&](const std::string& name) {
+    if (o.draw.empty()) return true;
+    for (const std::string& d : o.draw)
+      if (d == name) return true;
+    return false;
+  };
+  render::Scene all;
+  std::vector<std::string> names;
+  for (const io::SceneEntity& e : scene_.entities) {
+    if (!drawn(e.name) || e.kind == io::SceneEntityKind::Pose) continue;  // a pose is drawn by the robot reaching it
+    names.push_back(e.name);
+    const render::Scene& part = node<render::Scene>("tessellation:" + e.name, reason, [&](const std::string& id) {
+      const std::string why = via(reason, id);
+      switch (e.kind) {
+        case io::SceneEntityKind::Robot: {
+          const auto& rf = robot<double>(e.name, why);
+          std::vector<JointVector<double>> postures;  // those of the ik, fk and cuspidal outputs using it
+          std::vector<std::vector<JointVector<double>>> paths;  // cuspidal witness paths
+          // One output per question: the same postures asked in two scalars are drawn once, from
+          // the first such output in the scene.
+          std::vector<std::string> asked;
+          for (const io::SceneOutput& u : scene_.outputs)
+            if ((u.kind == io::SceneOutputKind::Ik || u.kind == io::SceneOutputKind::Fk ||
+                 u.kind == io::SceneOutputKind::Cuspidal) && u.robot == e.name) {
+              const std::string question = std::string(io::sceneOutputKindName(u.kind)) + ":" + u.pose + ":" + u.joints;
+              if (std::find(asked.begin(), asked.end(), question) != asked.end()) continue;
+              asked.push_back(question);
+              const OutputResult& out = output(u, why);
+              for (const auto& q : out.joints)
+                postures.push_back(Eigen::Map<const JointVector<double>>(q.data(), Eigen::Index(q.size())));
+              if (!out.path.empty()) {
+                std::vector<JointVector<double>> path;
+                for (const auto& q : out.path) path.push_back(Eigen::Map<const JointVector<double>>(q.data(), Eigen::Index(q.size())));
+                paths.push_back(std::move(path));
+              }
+            }
+          return robotTessellation(rf.robot, postures, paths, e.name);
+        }
+        case io::SceneEntityKind::Platform: {
+          const auto& P = platform<double>(e.name, why);
+          std::vector<SE3<double>> postures;
+          for (const io::SceneOutput& u : scene_.outputs)
+            if (u.kind == io::SceneOutputKind::Stewart && u.platform == e.name)
+              for (const auto& g : output(u, why).poses) postures.push_back(g);
+          return platformTessellation(P, postures, e.name);
+        }
+        case io::SceneEntityKind::Line:
+          return lineTessellation(io::sceneLine<double>(e), kFigureHalfLength, e.name);
+        case io::SceneEntityKind::Screw:
+          return screwTessellation(screw<double>(e.name, why), kFigureHalfLength, e.name);
+        case io::SceneEntityKind::Point: return pointTessellation(io::scenePoint<double>(e), e.name);
+        case io::SceneEntityKind::Pose: break;
+      }
+      return render::Scene{};
+    });
+    merge(all, part);
+  }
+  // The cylindroid of every cylindroid output whose two screws are drawn (once per pair of screws:
+  // the same pencil in two scalars is one surface).
+  std::vector<std::vector<std::string>> pencils;
+  for (const io::SceneOutput& u : scene_.outputs) {
+    if (u.kind != io::SceneOutputKind::Cylindroid || !drawn(u.screws[0]) || !drawn(u.screws[1])) continue;
+    if (std::find(pencils.begin(), pencils.end(), u.screws) != pencils.end()) continue;
+    pencils.push_back(u.screws);
+    const render::Scene& part = node<render::Scene>("tessellation:" + u.name, reason, [&](const std::string& id) {
+      const std::string why = via(reason, id);
+      return cylindroidTessellation(Cylindroid<double>(screw<double>(u.screws[0], why), screw<double>(u.screws[1], why)),
+                                    kFigureHalfLength, u.name);
+    });
+    merge(all, part);
+  }
+  all.axes = true;
+  all.title = scene_.origin.empty() ? o.name : std::filesystem::path(scene_.origin).filename().string() + ": " + o.name;
+  render::RenderOptions options;
+  options.width = o.width;
+  options.height = o.height;
+  const auto t0 = std::chrono::steady_clock::now();
+  // "<png>.<pid>.partial": two processes drawing the same figure do not write into one file.
+  const std::filesystem::path partial = o.png.string() + "." + std::to_string(::getpid()) + ".partial";
+  try {
+    render::renderPng(all, options, partial);
+  } catch (const std::exception& e) {
+    std::error_code ec;
+    std::filesystem::remove(partial, ec);
+    throw InvalidInput(o.where + ".png: cannot write " + o.png.string() + " (" + e.what() + ")");
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  pending_.push_back({outputNodeId(o), partial, o.png});
+  OutputResult r;
+  r.name = o.name;
+  r.json = io::figureOutputJson(o, names, seconds);
+  return r;
+}
+
+SceneResult SceneGraph::run(const std::vector<const io::SceneOutput*>& outputs) {
+  SceneResult result;
+  trace_ = &result.trace;
+  pending_.clear();
+  try {
+    for (const io::SceneOutput* o : outputs) result.outputs.push_back(output(*o, "output " + o->name));
+    // Every output succeeded: the figures take their names.
+    for (const Pending& p : pending_) {
+      std::filesystem::rename(p.partial, p.final);
+      result.written.push_back(p.final);
+    }
+  } catch (...) {
+    for (const Pending& p : pending_) {
+      std::error_code ec;
+      std::filesystem::remove(p.partial, ec);
+      nodes_.erase(p.node);  // built again (and written) by the next evaluation that asks
+    }
+    pending_.clear();
+    trace_ = nullptr;
+    throw;
+  }
+  pending_.clear();
+  trace_ = nullptr;
+  return result;
+}
+
+SceneResult SceneGraph::evaluate(const std::vector<std::string>& names) {
+  for (const std::string& n : names)
+    if (!scene_.output(n)) throw InvalidInput("--only: the scene " + scene_.origin + " has no output named \"" + n + "\"");
+  std::vector<const io::SceneOutput*> asked;
+  for (const io::SceneOutput& o : scene_.outputs) {
+    bool a = names.empty();
+    for (const std::string& n : names) a = a || n == o.name;
+    if (a) asked.push_back(&o);
+  }
+  return run(asked);
+}
+
+SceneResult SceneGraph::render(const std::filesystem::path& png, int width, int height) {
+  io::SceneOutput o;
+  o.name = "render";
+  o.kind = io::SceneOutputKind::Figure;
+  o.where = "--png";
+  o.png = png;
+  o.width = width;
+  o.height = height;
+  // Not a node of the scene's: each call draws again (its tessellations are shared).
+  nodes_.erase(outputNodeId(o));
+  return run({&o});
+}
+
+}  // namespace soma::scene

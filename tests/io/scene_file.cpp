@@ -1,0 +1,136 @@
+// The scene reader (io/scene_file.hpp): every class of bad input rejected before anything is
+// computed, with the file and the key path; entities read in the scalar their outputs ask for.
+#include "soma/io/scene_file.hpp"
+
+#include "soma/algebra/errors.hpp"
+#include "soma/io/pose_file.hpp"
+#include "soma/io/robot_file.hpp"
+
+#include "support/repo_file.hpp"
+#include "support/scalars.hpp"
+
+#include <catch2/catch.hpp>
+
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
+using namespace soma;
+using namespace soma::io;
+using Catch::Contains;
+using soma::test::repoFile;
+
+namespace {
+// Every rejected scene file of tests/io/scenes (also rejected by the JSON Schema: tests/io/scene_schema.py).
+struct BadFile {
+  const char* file;
+  const char* message;
+};
+const BadFile kBadFiles[] = {
+    {"bad_entity_kind.json", "entities.arm.kind: unknown entity kind \"robto\" (one of robot, pose, platform, point, line, screw)"},
+    {"bad_output_kind.json", "outputs.solve.kind: unknown output kind \"inverse\" (one of ik, fk, stewart, cuspidal, cylindroid, screw-system, figure)"},
+    {"bad_unknown_key.json", "outputs.solve: unknown field \"metod\" (an ik output has robot, pose, method, scalar, bits, needs)"},
+    {"bad_wrong_type.json", "outputs.solve.scalar: expected a string"},
+    {"bad_nothing.json", "outputs: the scene asks for nothing (give at least one output)"},
+    {"bad_missing_field.json", "outputs.solve: missing \"pose\" (the name of an entity)"},
+    {"bad_screw_count.json", "outputs.c.screws: expected the names of two screw entities"},
+    {"bad_entity_key.json", "entities.p: unknown field \"xyz\" (a point has \"at\": [x, y, z])"},
+    {"bad_top_key.json", ": unknown field \"output\" (a scene has entities, outputs, description)"},
+    {"bad_scalar_name.json", "outputs.solve.scalar: \"quad\" is not one of"},
+    {"bad_bits.json", "outputs.solve.bits: expected an integer in [16, 100000] (mpfr's precision)"},
+};
+
+const std::string kRobots = R"("arm": {"kind": "robot", "file": "studies/robots/puma560.json"},
+                              "goal": {"kind": "pose", "rotation": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "translation": [0.5, 0, 0.3]})";
+SceneFile scene(const std::string& outputs, const std::string& entities = kRobots) {
+  return parseScene("{\"entities\": {" + entities + "}, \"outputs\": {" + outputs + "}}", "scene.json", soma::test::repoFile(""));
+}
+}  // namespace
+
+TEST_CASE("scene file: every bad file is rejected with its key path", "[io][scene]") {
+  for (const BadFile& b : kBadFiles) {
+    INFO(b.file);
+    const auto path = repoFile(std::string("tests/io/scenes/") + b.file);
+    CHECK_THROWS_AS(readScene(path), InvalidInput);
+    CHECK_THROWS_WITH(readScene(path), Contains(path.string() + ": " + std::string(b.message).substr(b.message[0] == ':' ? 2 : 0)) ||
+                                           Contains(path.string() + b.message));
+  }
+}
+
+TEST_CASE("scene file: references, kinds and cycles are checked before anything is computed", "[io][scene]") {
+  CHECK_THROWS_WITH(scene(R"("solve": {"kind": "ik", "robot": "ur5", "pose": "goal"})"),
+                    "scene.json: outputs.solve.robot: no entity named \"ur5\"");
+  CHECK_THROWS_WITH(scene(R"("solve": {"kind": "ik", "robot": "arm", "pose": "arm"})"),
+                    "scene.json: outputs.solve.pose: \"arm\" is a robot, expected a pose");
+  CHECK_THROWS_WITH(scene(R"("a": {"kind": "fk", "robot": "arm", "joints": [0, 0, 0, 0, 0, 0], "needs": ["b"]},
+                             "b": {"kind": "ik", "robot": "arm", "pose": "goal", "needs": ["a"]})"),
+                    "scene.json: outputs.b.needs: a cycle between outputs: a → b → a");
+  CHECK_THROWS_WITH(scene(R"("a": {"kind": "fk", "robot": "arm", "joints": [0, 0, 0, 0, 0, 0], "needs": ["a"]})"),
+                    "scene.json: outputs.a.needs: a cycle between outputs: a → a");
+  CHECK_THROWS_WITH(scene(R"("a": {"kind": "fk", "robot": "arm", "joints": [0], "needs": ["zz"]})"),
+                    "scene.json: outputs.a.needs[0]: no output named \"zz\"");
+  CHECK_THROWS_WITH(scene(R"("c": {"kind": "cylindroid", "screws": ["arm", "goal"]})"),
+                    "scene.json: outputs.c.screws[0]: \"arm\" is a robot, expected a screw");
+  // nlohmann would keep the second "arm": a scene rejects the repeat (and a repeated output name).
+  CHECK_THROWS_WITH(scene(R"("solve": {"kind": "ik", "robot": "arm", "pose": "goal"})",
+                          kRobots + R"(, "arm": {"kind": "point", "at": [0, 0, 0]})"),
+                    "scene.json: entities: the key \"arm\" is given twice");
+  CHECK_THROWS_WITH(scene(R"("s": {"kind": "ik", "robot": "arm", "pose": "goal"}, "s": {"kind": "ik", "robot": "arm", "pose": "goal"})"),
+                    "scene.json: outputs: the key \"s\" is given twice");
+  CHECK_THROWS_WITH(scene(R"("s": {"kind": "ik", "robot": "arm", "pose": "goal", "kind": "fk"})"),
+                    "scene.json: outputs.s: the key \"kind\" is given twice");
+  CHECK_THROWS_WITH(scene(R"("solve": {"kind": "ik", "robot": "arm", "pose": "goal", "method": "simplex"})"),
+                    Contains("scene.json: outputs.solve.method: \"simplex\" is not one of auto"));
+  CHECK_THROWS_WITH(scene(R"("f": {"kind": "figure", "png": "x.png", "draw": ["nobody"]})"),
+                    "scene.json: outputs.f.draw[0]: no entity named \"nobody\"");
+  CHECK_THROWS_WITH(scene(R"("f": {"kind": "figure", "png": "x.png", "size": [10, 10]})"),
+                    "scene.json: outputs.f.size: expected [width, height], integers in [16, 8192]");
+  CHECK_THROWS_WITH(parseScene("[1, 2]", "scene.json"), "scene.json: a scene must be a JSON object");
+  CHECK_THROWS_WITH(parseScene("{\"outputs\": ", "scene.json"), Contains("scene.json: not valid JSON"));
+  CHECK_THROWS_WITH(scene(R"("solve": {"kind": "ik", "robot": "arm", "pose": "goal"})",
+                          R"("arm": {"kind": "robot", "file": "x.json", "convention": "dh"}, "goal": {"kind": "pose", "file": "p.json"})"),
+                    "scene.json: entities.arm: unknown field \"convention\" (a robot by file has file, tip)");
+}
+
+TEST_CASE("scene file: numbers are read in the scalar each output asks for", "[io][scene]") {
+  const std::string screws = R"("a": {"kind": "screw", "point": [0, 0, 0], "direction": [1, 0, 0], "pitch": "1e-60"},
+                                "b": {"kind": "screw", "coordinates": [0, 1, 0, 0, 0, "0.1"]})";
+  // double holds 1e-60; float does not (it underflows to 0): validateScene says so, naming the key.
+  const SceneFile ok = scene(R"("c": {"kind": "cylindroid", "screws": ["a", "b"]})", screws);
+  CHECK_NOTHROW(validateScene(ok));
+  const SceneFile bad = scene(R"("c": {"kind": "cylindroid", "screws": ["a", "b"], "scalar": "float"})", screws);
+  CHECK_THROWS_WITH(validateScene(bad), Contains("scene.json: entities.a.pitch: \"1e-60\"") && Contains("float"));
+  // Decimal strings exact in S: the screw's moment is mpfr's own 0.1.
+  setMpfrBits(256);
+  CHECK(sceneScrew<mpreal>(*ok.entity("b"))(5) == fromString<mpreal>("0.1"));
+  CHECK(sceneScrew<double>(*ok.entity("a"))(3) == 1e-60);  // pitch h along u = x: v = h u
+  // An inline robot body is a robot file's body, read by the robot reader (its messages too).
+  const SceneFile inl = scene(R"("f": {"kind": "fk", "robot": "r", "joints": [0]})",
+                              R"("r": {"kind": "robot", "convention": "dh", "joints": [{"a": 1, "alpha": 0, "d": 0, "theta": "0x1"}]})");
+  CHECK_THROWS_WITH(validateScene(inl), "scene.json: entities.r: joints[0].theta: \"0x1\" is not a decimal number (hexadecimal)");
+  const SceneFile wrongCount = scene(R"("f": {"kind": "fk", "robot": "arm", "joints": [0, 0]})");
+  CHECK_THROWS_WITH(validateScene(wrongCount), "scene.json: outputs.f.joints: 2 values given, the robot has 6 joints");
+  // A file entity resolves against the scene's folder; the same robot as the robot reader's.
+  const SceneFile fk = scene(R"("f": {"kind": "fk", "robot": "arm", "joints": [90, 0, 0, 0, 0, 0]})");
+  const RobotFile<double> rf = sceneRobot<double>(*fk.entity("arm"));
+  const RobotFile<double> direct = readRobot<double>(repoFile("studies/robots/puma560.json"));
+  CHECK(rf.robot.dof() == direct.robot.dof());
+  CHECK(rf.degrees);
+  CHECK(sceneJoints<double>(*fk.output("f"), rf)(0) == Approx(pi<double>() / 2).epsilon(1e-15));
+  const SE3<double> goal = scenePose<double>(*fk.entity("goal"));
+  CHECK(goal.translation()(0) == 0.5);
+}
+
+TEST_CASE("scene file: lines and points inline", "[io][scene]") {
+  const SceneFile s = scene(R"("c": {"kind": "cylindroid", "screws": ["a", "a"]})",
+                            R"("a": {"kind": "screw", "coordinates": [1, 0, 0, 0, 0, 0]},
+                               "l": {"kind": "line", "through": [[0, 0, 1], [1, 0, 1]]},
+                               "m": {"kind": "line", "point": [0, 0, 1], "direction": [0, 0, 0]},
+                               "p": {"kind": "point", "at": [1, 2, "3.5"]})");
+  const PluckerLine<double> l = sceneLine<double>(*s.entity("l"));
+  // Through (0,0,1) and (1,0,1): direction x, moment q × ω = (0,0,1) × (1,0,0) = (0,1,0).
+  CHECK(l.direction() == Vec3<double>(1, 0, 0));
+  CHECK(l.moment() == Vec3<double>(0, 1, 0));
+  CHECK_THROWS_WITH(sceneLine<double>(*s.entity("m")), "scene.json: entities.m: PluckerLine::pointDirection: direction d is zero");
+  CHECK(scenePoint<double>(*s.entity("p"))(2) == 3.5);
+}
+
+}  // namespace SOMA_UNITY_ID

@@ -1,0 +1,329 @@
+// Every scene of examples/scenes, run by the scene graph and checked against values computed here
+// independently of soma's solvers: forward kinematics by the DH / MDH / POE products written out,
+// the postures a pose was made from, leg lengths |R q_i + t − p_i|, a cylindroid's pitches by
+// brute-force extremes of the pencil's pitch, the counts the book gives.
+#include "soma/io/scene_file.hpp"
+#include "soma/geometry/screws/identification.hpp"
+#include "soma/scene/scene_graph.hpp"
+
+#include "support/repo_file.hpp"
+
+#include <catch2/catch.hpp>
+#include <Eigen/Geometry>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
+using namespace soma;
+using json = nlohmann::json;
+using soma::test::repoFile;
+using M4 = Eigen::Matrix4d;
+
+namespace {
+
+json runScene(const std::string& name) {
+  scene::SceneGraph g(io::readScene(repoFile("examples/scenes/" + name)));
+  const scene::SceneResult r = g.evaluate();
+  json all = json::object();
+  for (const auto& o : r.outputs) all[o.name] = json::parse(o.json);
+  CHECK(r.ok());
+  return all;
+}
+
+json fileJson(const std::string& rel) {
+  std::ifstream in(repoFile(rel));
+  return json::parse(in);
+}
+
+M4 rotX(double t) {
+  M4 m = M4::Identity();
+  m.block<3, 3>(0, 0) = Eigen::AngleAxisd(t, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  return m;
+}
+M4 rotZ(double t) {
+  M4 m = M4::Identity();
+  m.block<3, 3>(0, 0) = Eigen::AngleAxisd(t, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  return m;
+}
+M4 trans(double x, double y, double z) {
+  M4 m = M4::Identity();
+  m.block<3, 1>(0, 3) = Eigen::Vector3d(x, y, z);
+  return m;
+}
+
+// The forward kinematics of a DH / MDH table (a robot file's "joints"), written out: standard
+// A_i = Rz(θ_i + q_i)·Tz(d_i)·Tx(a_i)·Rx(α_i); modified A_i = Rx(α_{i−1})·Tx(a_{i−1})·Rz(θ_i + q_i)·Tz(d_i).
+M4 tableFk(const json& robot, const std::vector<double>& q) {
+  const double u = robot.value("angles", "radians") == "degrees" ? M_PI / 180 : 1.0;
+  const bool modified = robot["convention"] == "mdh";
+  M4 T = M4::Identity();
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    const json& r = robot["joints"][i];
+    const double a = r["a"], al = double(r["alpha"]) * u, d = r["d"], th = double(r["theta"]) * u + q[i];
+    T = T * (modified ? rotX(al) * trans(a, 0, 0) * rotZ(th) * trans(0, 0, d)
+                      : rotZ(th) * trans(0, 0, d) * trans(a, 0, 0) * rotX(al));
+  }
+  return T;
+}
+
+M4 poseOf(const json& p) {
+  M4 T = M4::Identity();
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) T(r, c) = p["rotation"][r][c];
+    T(r, 3) = p["translation"][r];
+  }
+  return T;
+}
+
+std::vector<double> jointsIn(const json& solution, bool degrees) {
+  std::vector<double> q;
+  for (const auto& v : solution["joints"]) q.push_back(double(v) * (degrees ? M_PI / 180 : 1.0));
+  return q;
+}
+
+// Every posture reproduces the pose by the table's own product; returns how many match `seed`.
+int checkPostures(const json& out, const json& robot, const M4& goal, const std::vector<double>& seed, double tol) {
+  int seen = 0;
+  for (const auto& s : out["solutions"]) {
+    const std::vector<double> q = jointsIn(s, out["angles"] == "degrees");
+    CHECK((tableFk(robot, q) - goal).cwiseAbs().maxCoeff() <= tol);
+    bool same = !seed.empty();
+    for (std::size_t i = 0; i < seed.size(); ++i)
+      same = same && std::abs(std::remainder(q[i] - seed[i], 2 * M_PI)) <= 1e-7;
+    seen += same;
+  }
+  return seen;
+}
+
+// Principal pitches by brute force: the pitch ω·v/ω·ω of cos θ a + sin θ b on a fine grid, refined
+// by golden sections around the best grid points (independent of Cylindroid's diagonalisation).
+std::pair<double, double> pencilPitchExtremes(const Eigen::Matrix<double, 6, 1>& a, const Eigen::Matrix<double, 6, 1>& b) {
+  auto h = [&](double t) {
+    const Eigen::Matrix<double, 6, 1> s = std::cos(t) * a + std::sin(t) * b;
+    return s.head<3>().dot(s.tail<3>()) / s.head<3>().squaredNorm();
+  };
+  auto refine = [&](double t0, double sign) {
+    double lo = t0 - 1e-3, hi = t0 + 1e-3;
+    const double g = (std::sqrt(5.0) - 1) / 2;
+    for (int k = 0; k < 200; ++k) {
+      const double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+      if (sign * h(x1) > sign * h(x2)) hi = x2;
+      else lo = x1;
+    }
+    return h((lo + hi) / 2);
+  };
+  double tMax = 0, tMin = 0;
+  const int n = 20000;
+  for (int k = 0; k < n; ++k) {
+    const double t = M_PI * k / n;
+    if (h(t) > h(tMax)) tMax = t;
+    if (h(t) < h(tMin)) tMin = t;
+  }
+  return {refine(tMax, 1), refine(tMin, -1)};
+}
+
+Eigen::Matrix<double, 6, 1> screwOf(const Eigen::Vector3d& q, const Eigen::Vector3d& d, double pitch) {
+  const Eigen::Vector3d u = d.normalized();
+  Eigen::Matrix<double, 6, 1> s;
+  s << u, q.cross(u) + pitch * u;
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("example scene ur5_postures: every posture reproduces the pose; the pose's own joints among them", "[scene][examples]") {
+  const json scene = fileJson("examples/scenes/ur5_postures.json");
+  const json out = runScene("ur5_postures.json")["postures"];
+  CHECK(out["count"] == 8);  // the UR's 3 parallel axes: 8 postures (its expected count)
+  CHECK(checkPostures(out, scene["entities"]["ur5"], poseOf(scene["entities"]["goal"]), {0.3, -1.1, 1.4, -0.6, 0.9, 0.2},
+                      1e-9) == 1);
+}
+
+TEST_CASE("example scene kuka_postures: 8 postures in double and float128, the pose's joints among them", "[scene][examples]") {
+  const json scene = fileJson("examples/scenes/kuka_postures.json");
+  const json all = runScene("kuka_postures.json");
+  for (const char* o : {"postures", "postures_float128"}) {
+    INFO(o);
+    CHECK(all[o]["expected_count"] == 8);
+    CHECK(checkPostures(all[o], scene["entities"]["kr6"], poseOf(scene["entities"]["goal"]), {0.4, -0.7, 0.5, 0.3, 0.8, -0.5},
+                        1e-9) == 1);
+  }
+  CHECK(all["postures"]["count"] == all["postures_float128"]["count"]);
+}
+
+TEST_CASE("example scene puma_urdf: the URDF robot's postures and tool pose by the PUMA's DH product", "[scene][examples]") {
+  const json dh = fileJson("studies/robots/puma560.json");
+  const json all = runScene("puma_urdf.json");
+  const M4 goal = poseOf(fileJson("studies/robots/puma560_pose.json"));
+  CHECK(all["postures"]["count"].get<int>() >= 1);
+  CHECK(checkPostures(all["postures"], dh, goal, {}, 1e-9) == 0);
+  const M4 tool = tableFk(dh, {0.1, -0.4, 0.3, 0.2, 0.5, -0.6});
+  CHECK((poseOf(all["tool"]["pose"]) - tool).cwiseAbs().maxCoeff() <= 1e-12);
+}
+
+TEST_CASE("example scene wrist_rpy: the 2 postures of an RPY wrist (GF §5.1)", "[scene][examples]") {
+  const json out = runScene("wrist_rpy.json")["postures"];
+  CHECK(out["count"] == 2);
+  const M4 goal = poseOf(fileJson("examples/scenes/wrist_rpy.json")["entities"]["goal"]);
+  int seed = 0;
+  for (const auto& s : out["solutions"]) {
+    const std::vector<double> q = jointsIn(s, false);
+    // R = Rz(q1) Ry(q2) Rx(q3), the tool at R·(0.1, 0, 0).
+    const Eigen::Matrix3d R = (Eigen::AngleAxisd(q[0], Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(q[1], Eigen::Vector3d::UnitY()) *
+                               Eigen::AngleAxisd(q[2], Eigen::Vector3d::UnitX())).toRotationMatrix();
+    CHECK((R - goal.block<3, 3>(0, 0)).cwiseAbs().maxCoeff() <= 1e-12);
+    CHECK((R * Eigen::Vector3d(0.1, 0, 0) - goal.block<3, 1>(0, 3)).cwiseAbs().maxCoeff() <= 1e-12);
+    seed += std::abs(q[0] - 0.3) < 1e-9 && std::abs(q[1] - 0.4) < 1e-9 && std::abs(q[2] - 0.5) < 1e-9;
+  }
+  CHECK(seed == 1);
+}
+
+TEST_CASE("example scene general6r: postures of a general 6R by its DH product; 16 complex", "[scene][examples]") {
+  const json out = runScene("general6r.json")["postures"];
+  CHECK(out["expected_count"] == 16);
+  CHECK(out["count"].get<int>() % 2 == 0);  // real postures of 16 complex come in an even number
+  CHECK(checkPostures(out, fileJson("studies/robots/general6r.json"), poseOf(fileJson("studies/robots/general6r_pose.json")),
+                      {}, 1e-8) == 0);
+}
+
+TEST_CASE("example scene puma_mpfr: the same postures in mpfr and double, each by the DH product", "[scene][examples]") {
+  const json all = runScene("puma_mpfr.json");
+  const json dh = fileJson("studies/robots/puma560_nolimits.json");
+  const M4 goal = poseOf(fileJson("studies/robots/puma560_pose.json"));
+  CHECK(all["postures"]["count"] == 8);
+  CHECK(all["postures_mpfr"]["count"] == 8);
+  CHECK(all["postures_mpfr"]["bits"] == 160);
+  CHECK(checkPostures(all["postures_mpfr"], dh, goal, {}, 1e-12) == 0);
+  CHECK(all["postures_mpfr"]["residual"].get<double>() <= 1e-40);
+}
+
+TEST_CASE("example scene puma_mdh: modified DH postures by the MDH product, the pose's joints among them", "[scene][examples]") {
+  const json scene = fileJson("examples/scenes/puma_mdh.json");
+  const json out = runScene("puma_mdh.json")["postures"];
+  CHECK(out["count"] == 8);
+  CHECK(checkPostures(out, scene["entities"]["puma"], poseOf(scene["entities"]["goal"]), {0.2, -0.5, 0.4, 0.3, -0.6, 0.7},
+                      1e-9) == 1);
+}
+
+void checkLegs(const json& out, const json& P, const M4& known) {
+  int seen = 0;
+  for (const auto& s : out["solutions"]) {
+    const M4 g = poseOf(s);
+    for (int i = 0; i < 6; ++i) {
+      Eigen::Vector3d b, p;
+      for (int k = 0; k < 3; ++k) b(k) = P["base"][i][k], p(k) = P["platform"][i][k];
+      const double L = (g.block<3, 3>(0, 0) * p + g.block<3, 1>(0, 3) - b).norm();
+      CHECK(std::abs(L - double(P["leg_lengths"][i])) <= 1e-10);
+    }
+    seen += (g - known).cwiseAbs().maxCoeff() <= 1e-9;
+  }
+  CHECK(seen == 1);
+}
+
+M4 stewartKnownPosture() {
+  M4 g = M4::Identity();
+  g.block<3, 3>(0, 0) = Eigen::AngleAxisd(0.25, Eigen::Vector3d(0.2, 0.3, 0.93).normalized()).toRotationMatrix();
+  g.block<3, 1>(0, 3) = Eigen::Vector3d(0.05, -0.03, 0.9);
+  return g;
+}
+
+TEST_CASE("example scene stewart_irregular: leg lengths of every posture; the made-from posture among them", "[scene][examples]") {
+  const json out = runScene("stewart_irregular.json")["postures"];
+  CHECK(out["certified"] == true);
+  CHECK(out["count"].get<int>() % 2 == 0);  // 40 complex solutions: the real ones are even in number
+  checkLegs(out, fileJson("examples/scenes/stewart_irregular.json")["entities"]["hexapod"], stewartKnownPosture());
+}
+
+TEST_CASE("example scene stewart_numeric: ceres postures polished in long double keep the leg lengths", "[scene][examples]") {
+  const json out = runScene("stewart_numeric.json")["postures"];
+  CHECK(out["scalar"] == "long-double");
+  checkLegs(out, fileJson("examples/scenes/stewart_numeric.json")["entities"]["hexapod"], stewartKnownPosture());
+}
+
+TEST_CASE("example scene cylindroid_two_screws: the pitches are the pencil's pitch extremes", "[scene][examples]") {
+  const json all = runScene("cylindroid_two_screws.json");
+  const auto [hMax, hMin] = pencilPitchExtremes(screwOf({0, 0, 0}, {1, 0, 0}, 0.2), screwOf({0, 0, 0.5}, {1, 1, 0}, -0.1));
+  for (const char* o : {"pencil", "pencil_mpfr"}) {
+    CHECK(all[o]["pitches"][0].get<double>() == Approx(hMax).margin(1e-9));
+    CHECK(all[o]["pitches"][1].get<double>() == Approx(hMin).margin(1e-9));
+  }
+}
+
+TEST_CASE("example scene cylindroid_perpendicular: perpendicular meeting screws are the principal ones", "[scene][examples]") {
+  const json out = runScene("cylindroid_perpendicular.json")["pencil"];
+  CHECK(out["pitches"][0].get<double>() == Approx(0.3).margin(1e-15));
+  CHECK(out["pitches"][1].get<double>() == Approx(-0.2).margin(1e-15));
+  for (int k = 0; k < 3; ++k) CHECK(std::abs(out["centre"][k].get<double>()) <= 1e-15);
+}
+
+TEST_CASE("example scene cylindroid_lines: the cylindroid of two lines", "[scene][examples]") {
+  const json out = runScene("cylindroid_lines.json")["pencil"];
+  Eigen::Matrix<double, 6, 1> a, b;
+  a << 1, 0, 0, 0, 0, 0;
+  b = screwOf({0, 0, 0.4}, {0.5, std::sqrt(3.0) / 2, 0}, 0);
+  const auto [hMax, hMin] = pencilPitchExtremes(a, b);
+  CHECK(out["pitches"][0].get<double>() == Approx(hMax).margin(1e-9));
+  CHECK(out["pitches"][1].get<double>() == Approx(hMin).margin(1e-9));
+  // Two lines at angle α (cos α = ½) with reciprocal product ω₁·v₂ + ω₂·v₁ = 2k: the pitch h of
+  // μ l₁ + λ l₂ solves det(K − h G) = 0, K = [[0, k], [k, 0]], G = [[1, c], [c, 1]]:
+  // h = k / (1 + c) and h = −k / (1 − c).
+  const double k = (a.head<3>().dot(b.tail<3>()) + b.head<3>().dot(a.tail<3>())) / 2, c = 0.5;
+  CHECK(out["pitches"][0].get<double>() == Approx(-k / (1 - c)).margin(1e-12));
+  CHECK(out["pitches"][1].get<double>() == Approx(k / (1 + c)).margin(1e-12));
+}
+
+TEST_CASE("example scene arm3r_fk: the finger arm's tool position, GF §5.2.2", "[scene][examples]") {
+  const json all = runScene("arm3r_fk.json");
+  const double q1 = 0.3, q2 = 0.5, q3 = -0.9;
+  // p = Rz(q1)·(0, 0.8 + 1.1 cos q2 + 0.6 cos(q2+q3), 1.1 sin q2 + 0.6 sin(q2+q3))
+  const Eigen::Vector3d p = Eigen::AngleAxisd(q1, Eigen::Vector3d::UnitZ()) *
+                            Eigen::Vector3d(0, 0.8 + 1.1 * std::cos(q2) + 0.6 * std::cos(q2 + q3),
+                                            1.1 * std::sin(q2) + 0.6 * std::sin(q2 + q3));
+  for (const char* o : {"tool", "tool_mpfr"})
+    for (int k = 0; k < 3; ++k) CHECK(all[o]["pose"]["translation"][k].get<double>() == Approx(p(k)).margin(1e-14));
+}
+
+}  // namespace SOMA_UNITY_ID
+
+namespace SOMA_UNITY_ID {
+
+TEST_CASE("example scene screw_system_ia1: a moved IA1 normal form is identified with its pitches", "[scene][examples]") {
+  const json all = runScene("screw_system_ia1.json");
+  for (const char* o : {"system", "system_float128"}) {
+    INFO(o);
+    CHECK(all[o]["dimension"] == 3);
+    CHECK(all[o]["type_name"] == soma::screwSystemTypeName(soma::ScrewSystemType::IA1_3));
+    // Built from (e_i; p_i e_i) with p = 0.3, 0.1, −0.2: the principal pitches are invariants.
+    REQUIRE(all[o]["parameters"].size() == 3);
+    CHECK(all[o]["parameters"][0].get<double>() == Approx(0.3).margin(1e-12));
+    CHECK(all[o]["parameters"][1].get<double>() == Approx(0.1).margin(1e-12));
+    CHECK(all[o]["parameters"][2].get<double>() == Approx(-0.2).margin(1e-12));
+  }
+}
+
+}  // namespace SOMA_UNITY_ID
+
+namespace SOMA_UNITY_ID {
+
+TEST_CASE("example scene cuspidal_3r_witness: 4 cusps; the witness's two postures reach one point", "[scene][examples]") {
+  const json out = runScene("cuspidal_3r_witness.json")["verdict"];
+  CHECK(out["cuspidal"] == true);
+  CHECK(out["cusp_count"] == 4);  // Wenger's orthogonal 3R (1, 2, 1.5, 1, 0): 4 cusp points
+  const json& w = out["witness"];
+  REQUIRE(w["found"] == true);
+  const json robot = fileJson("studies/robots/cusp3r_orthogonal_wenger.json");
+  std::vector<double> start, goal;
+  for (int i = 0; i < 3; ++i) start.push_back(w["start"][i]), goal.push_back(w["goal"][i]);
+  const Eigen::Vector3d target(w["target"][0].get<double>(), w["target"][1].get<double>(), w["target"][2].get<double>());
+  // Both ends reach the target by the DH product; they are two different postures.
+  CHECK((tableFk(robot, start).block<3, 1>(0, 3) - target).norm() <= 1e-6);
+  CHECK((tableFk(robot, goal).block<3, 1>(0, 3) - target).norm() <= 1e-6);
+  double apart = 0;
+  for (int i = 0; i < 3; ++i) apart = std::max(apart, std::abs(std::remainder(start[i] - goal[i], 2 * M_PI)));
+  CHECK(apart > 1e-3);
+}
+
+}  // namespace SOMA_UNITY_ID
