@@ -111,6 +111,7 @@
 #include <soma/geometry/study/study_plane.hpp>
 
 // io
+#include <soma/io/input_limits.hpp>
 #include <soma/io/json_file.hpp>
 #include <soma/io/link_inertia_file.hpp>
 #include <soma/io/number.hpp>

@@ -23,6 +23,7 @@ std::vector<SpatialInertia<double>> linkInertiasFromJson(const nlohmann::json& j
       return v;
     };
     if (!l.is_object() || !l.contains("mass")) throw InvalidInput(where + ": missing \"mass\"");
+    checkKeys(l, {"mass", "com", "inertia"}, where, "(a link has mass, com, inertia)");
     const double m = readNumber<double>(l["mass"], path.key("mass"));
     if (!(m > 0)) throw InvalidInput(where + ": mass " + toString(m) + " is not positive (a massless link has no inertia)");
     const std::vector<double> c = array("com", 3), I = array("inertia", 6);

@@ -8,52 +8,14 @@
 
 #include <cctype>
 #include <charconv>
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <limits>
 
 namespace soma::io {
 
 namespace {
-
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
-
-/// [+|-] digits [. digits] [(e|E) [+|-] digits], with at least one digit before the exponent.
-bool isDecimal(std::string_view t) {
-  std::size_t i = 0;
-  const std::size_t n = t.size();
-  if (i < n && (t[i] == '+' || t[i] == '-')) ++i;
-  std::size_t digits = 0;
-  for (; i < n && isDigit(t[i]); ++i) ++digits;
-  if (i < n && t[i] == '.')
-    for (++i; i < n && isDigit(t[i]); ++i) ++digits;
-  if (digits == 0) return false;
-  if (i < n && (t[i] == 'e' || t[i] == 'E')) {
-    ++i;
-    if (i < n && (t[i] == '+' || t[i] == '-')) ++i;
-    std::size_t exponent = 0;
-    for (; i < n && isDigit(t[i]); ++i) ++exponent;
-    if (exponent == 0) return false;
-  }
-  return i == n;
-}
-
-std::string lower(std::string_view t) {
-  std::string s(t);
-  for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
-/// Why `t` is not a decimal number, for the message ("" when there is nothing more to say).
-std::string defect(std::string_view t) {
-  if (t.empty()) return " (empty)";
-  if (std::isspace(static_cast<unsigned char>(t.front())) || std::isspace(static_cast<unsigned char>(t.back())))
-    return " (leading or trailing space)";
-  std::string s = lower(t);
-  if (!s.empty() && (s[0] == '+' || s[0] == '-')) s.erase(0, 1);
-  if (s.rfind("0x", 0) == 0) return " (hexadecimal)";
-  if (s == "nan" || s.rfind("nan(", 0) == 0 || s == "inf" || s == "infinity") return " (NaN and infinity are not numbers of a file)";
-  return "";
-}
 
 std::string quoted(std::string_view t) { return "\"" + std::string(t) + "\""; }
 
@@ -73,22 +35,53 @@ template <class S> S convert(const std::string& t) {
   else return fromString<S>(t);  // strtoflt128 and mpfr_set_str: exact in S, no range exception
 }
 
-template <class S> bool isZero(const S& x) { return x == S(0); }
+/// Significant bits a subnormal x keeps (x ≠ 0, |x| below S's smallest normal number).
+template <class S> int subnormalBits(const S& x) {
+  using std::abs;
+  S y = abs(x);
+  int k = 0;
+  while (y < std::numeric_limits<S>::min()) y *= S(2), ++k;
+  return std::max(1, digits<S>() - k);
+}
 
 /// The range checks shared by decimal strings and JSON numbers: `shown` is the value as written.
+/// S holds 0 and the normal magnitudes (number.hpp); mpfr has no subnormals (below 2^(emin−1) it
+/// underflows to 0).
 template <class S> void checkRange(const S& x, bool nonZero, const std::string& shown, const std::string& where) {
+  using std::abs;
+  const std::string name(scalarName<S>());
   if (!isFinite(x))
-    throw InvalidInput(where + ": " + shown + " is outside the range of " + std::string(scalarName<S>()) +
-                       " (it overflows to infinity)");
-  if (nonZero && isZero(x))
-    throw InvalidInput(where + ": " + shown + " is too small for " + std::string(scalarName<S>()) +
-                       " (a non-zero value that underflows to 0)");
+    throw InvalidInput(where + ": " + shown + " is outside the range of " + name + " (it overflows to infinity; " +
+                       holdsText<S>() + ")");
+  if (nonZero && x == S(0))
+    throw InvalidInput(where + ": " + shown + " is too small for " + name + " (a non-zero value that underflows to 0; " +
+                       holdsText<S>() + ")");
+  if (x != S(0) && abs(x) < std::numeric_limits<S>::min())
+    throw InvalidInput(where + ": " + shown + " is too small for " + name + " (a subnormal " + name + " keeps " +
+                       std::to_string(subnormalBits(x)) + " of its " + std::to_string(digits<S>()) + " bits; " +
+                       holdsText<S>() + ")");
 }
 
 }  // namespace
 
+template <class S> std::string holdsText() {
+  const std::string name(scalarName<S>());
+  if constexpr (std::is_same_v<S, mpreal>) {
+    // x = m·2^e with 1/2 ≤ m < 1 and emin ≤ e ≤ emax (mpfr_get_emin/emax), at every precision.
+    const long emin = mpfr_get_emin(), emax = mpfr_get_emax();
+    const double log2 = 0.30102999566398120;  // log10(2), for the decimal exponents shown
+    return name + " holds 0 and magnitudes from 2^" + std::to_string(emin - 1) + " to below 2^" + std::to_string(emax) +
+           " (about 1e" + std::to_string(static_cast<long long>(std::floor(double(emin - 1) * log2))) + " to 1e" +
+           std::to_string(static_cast<long long>(std::floor(double(emax) * log2))) + ")";
+  } else {
+    return name + " holds 0 and magnitudes from " + toString(std::numeric_limits<S>::min()) +
+           " (its smallest normal number) to " + toString(std::numeric_limits<S>::max());
+  }
+}
+
 template <class S> S parseDecimal(std::string_view text, const std::string& where) {
-  if (!isDecimal(text)) throw InvalidInput(where + ": " + quoted(text) + " is not a decimal number" + defect(text));
+  if (!detail::isDecimal(text))
+    throw InvalidInput(where + ": " + quoted(text) + " is not a decimal number" + detail::decimalDefect(text));
   const std::string t(text);
   const S x = convert<S>(t);
   checkRange<S>(x, detail::decimalIsNonZero(text), quoted(text), where);
@@ -117,6 +110,7 @@ template <class S> S readNumber(const nlohmann::json& j, const std::string& wher
 
 #define SOMA_INSTANTIATE_NUMBER(S) namespace io {                                            \
   template S parseDecimal<S>(std::string_view, const std::string&);              \
-  template S readNumber<S>(const nlohmann::json&, const std::string&, NumberSource*); }
+  template S readNumber<S>(const nlohmann::json&, const std::string&, NumberSource*);      \
+  template std::string holdsText<S>(); }
 
 }  // namespace soma::io

@@ -4,8 +4,7 @@
 #include "soma/io/json_file.hpp"
 #include "soma/io/number.hpp"
 
-#include <fstream>
-#include <sstream>
+#include <limits>
 
 namespace soma::io {
 
@@ -24,12 +23,15 @@ V2 point(const json& j, const KeyPath& path) {
 }
 
 void readPositions(const json& in, PlanarScene& s) {
+  checkKeys(in, {"positions", "circle_points", "angles", "name", "comment"}, "scene",
+            "(a positions scene has positions, circle_points, angles)");
   const json& P = in["positions"];
   if (!P.is_array()) throw InvalidInput("\"positions\" must be an array of {\"x\", \"y\", \"angle\"}");
   for (std::size_t i = 0; i < P.size(); ++i) {
     const std::string w = "position " + std::to_string(i + 1);
     const KeyPath path = KeyPath().key("positions").index(i);
     if (!P[i].is_object()) throw InvalidInput(w + ": expected an object {\"x\", \"y\", \"angle\"}");
+    checkKeys(P[i], {"x", "y", "angle"}, path.str(), "(a position has x, y, angle)");
     PlanarPosition p;
     p.angle = number(P[i], "angle", w, path) * s.angleUnit;
     p.x = number(P[i], "x", w, path);
@@ -45,8 +47,12 @@ void readPositions(const json& in, PlanarScene& s) {
 }
 
 void readFourBar(const json& in, PlanarScene& s) {
+  checkKeys(in, {"fourbar", "crank_angle", "mode", "crank_rates", "angles", "name", "comment"}, "scene",
+            "(a 4-bar scene has fourbar, crank_angle, mode, crank_rates, angles)");
   const json& f = in["fourbar"];
   if (!f.is_object()) throw InvalidInput("\"fourbar\" must be an object {\"ground\", \"crank\", \"coupler\", \"rocker\"}");
+  checkKeys(f, {"ground", "crank", "coupler", "rocker", "coupler_point"}, "fourbar",
+            "(a 4-bar has ground, crank, coupler, rocker, coupler_point)");
   if (!f.contains("ground") || !f["ground"].is_array() || f["ground"].size() != 2)
     throw InvalidInput("fourbar: \"ground\" must be [[x, y], [x, y]] (c1, c4)");
   const KeyPath fp = KeyPath().key("fourbar");
@@ -59,9 +65,12 @@ void readFourBar(const json& in, PlanarScene& s) {
   fb.rocker = number(f, "rocker", "fourbar", fp);
   if (in.contains("crank_angle")) fb.crankAngle = number(in, "crank_angle", "scene", KeyPath()) * s.angleUnit;
   if (in.contains("mode")) {
-    if (!in["mode"].is_number_integer() || (in["mode"].get<int>() != 1 && in["mode"].get<int>() != -1))
-      throw InvalidInput("\"mode\" must be 1 or -1 (assembly mode)");
-    fb.mode = in["mode"].get<int>();
+    // Read as the integer written (4294967297 is not 1: no narrowing to int before the check).
+    const long long mode = readInteger(in["mode"], "mode", std::numeric_limits<long long>::min(),
+                                       std::numeric_limits<long long>::max());
+    if (mode != 1 && mode != -1)
+      throw InvalidInput("\"mode\" must be 1 or -1 (assembly mode), got " + std::to_string(mode));
+    fb.mode = int(mode);
   }
   if (in.contains("crank_rates")) {
     const json& r = in["crank_rates"];
@@ -74,15 +83,28 @@ void readFourBar(const json& in, PlanarScene& s) {
 }  // namespace
 
 PlanarScene readPlanarScene(const std::filesystem::path& file) {
-  std::ifstream is(file);
-  if (!is) throw InvalidInput("cannot read scene file '" + file.string() + "'");
-  std::stringstream text;
-  text << is.rdbuf();
+  std::string text;
+  try {
+    text = readTextFile(file, "scene");
+  } catch (const InvalidInput& e) {
+    throw InvalidInput("cannot read scene file '" + file.string() + "' (" + e.what() + ")");
+  }
+  try {
+    return parsePlanarScene(text, file.string());
+  } catch (const InvalidInput& e) {
+    // The messages below name the field; the file goes first (unless the JSON reader named it).
+    const std::string msg = e.what();
+    if (msg.rfind(file.string(), 0) == 0) throw;
+    throw InvalidInput(file.string() + ": " + msg);
+  }
+}
+
+PlanarScene parsePlanarScene(const std::string& text, const std::string& origin) {
   json in;
   try {
-    in = parseJsonText(text.str(), file.string());
+    in = parseJsonText(text, origin);
   } catch (const json::parse_error& e) {
-    throw InvalidInput("scene file '" + file.string() + "' is not valid JSON: " + e.what());
+    throw InvalidInput("scene file '" + origin + "' is not valid JSON: " + e.what());
   }
   if (!in.is_object()) throw InvalidInput("scene file: expected a JSON object with \"positions\" or \"fourbar\"");
   PlanarScene s;

@@ -3,12 +3,12 @@
 #include "soma/io/robot_file.hpp"
 
 #include "soma/algebra/errors.hpp"
+#include "soma/io/input_limits.hpp"
 #include "soma/io/json_file.hpp"
 #include "soma/io/link_inertia_file.hpp"
 #include "soma/io/number.hpp"
 #include "soma/io/pose_file.hpp"
 
-#include <sstream>
 
 namespace soma::io {
 
@@ -25,7 +25,7 @@ template <class S> Vec3<S> vec3(const json& j, const std::string& where, const K
 template <class S> S angleUnit(bool degrees) { return degrees ? S(pi<S>() / S(180)) : S(1); }
 
 template <class S>
-void limits(const json& jj, const std::string& where, const KeyPath& path, bool angular, bool degrees, S& lo, S& hi) {
+void jointLimits(const json& jj, const std::string& where, const KeyPath& path, bool angular, bool degrees, S& lo, S& hi) {
   if (!jj.contains("limits")) return;
   const json& l = jj["limits"];
   if (!l.is_array() || l.size() != 2) throw InvalidInput(where + " limits: expected [lower, upper]");
@@ -63,6 +63,9 @@ template <class S> RobotFile<S> parseRobot(const std::string& text, const std::s
     throw InvalidInput(origin + ": convention \"" + conv + "\" is not one of dh, mdh, poe");
   if (!j.contains("joints") || !j["joints"].is_array() || j["joints"].empty())
     throw InvalidInput(origin + ": \"joints\" must be a non-empty array");
+  if (j["joints"].size() > limits::maxJoints)
+    throw InvalidInput(origin + ": joints: " + std::to_string(j["joints"].size()) + " joints, more than the " +
+                       std::to_string(limits::maxJoints) + " soma reads");
   const S du = angleUnit<S>(out.degrees);
   const KeyPath joints = KeyPath(origin).key("joints");
   std::vector<S> lo, hi;
@@ -74,6 +77,8 @@ template <class S> RobotFile<S> parseRobot(const std::string& text, const std::s
       const std::string where = origin + ": joint " + std::to_string(i + 1);
       const KeyPath path = joints.index(i);
       if (!jj.is_object()) throw InvalidInput(where + ": expected an object");
+      checkKeys(jj, {"type", "axis", "point", "offset", "limits"}, where,
+                "(a poe joint has type, axis, point, offset, limits)");
       SerialJoint<S> sj;
       sj.type = jointType(jj, where);
       if (!jj.contains("axis")) throw InvalidInput(where + ": missing \"axis\"");
@@ -84,7 +89,7 @@ template <class S> RobotFile<S> parseRobot(const std::string& text, const std::s
       }
       const bool ang = sj.type == JointType::Revolute;
       if (jj.contains("offset")) sj.offset = readNumber<S>(jj["offset"], path.key("offset")) * (ang ? du : S(1));
-      limits<S>(jj, where, path, ang, out.degrees, sj.lower, sj.upper);
+      jointLimits<S>(jj, where, path, ang, out.degrees, sj.lower, sj.upper);
       js.push_back(sj);
     }
     out.robot = SerialRobot<S>::fromPOE(js, poseFromJson<S>(j["home"], origin + ": home"), name);
@@ -107,7 +112,7 @@ template <class S> RobotFile<S> parseRobot(const std::string& text, const std::s
     r.d = readNumber<S>(jj["d"], path.key("d"));
     r.theta = readNumber<S>(jj["theta"], path.key("theta")) * du;
     S l = -std::numeric_limits<S>::infinity(), h = std::numeric_limits<S>::infinity();
-    limits<S>(jj, where, path, r.type == JointType::Revolute, out.degrees, l, h);
+    jointLimits<S>(jj, where, path, r.type == JointType::Revolute, out.degrees, l, h);
     lo.push_back(l);
     hi.push_back(h);
     rows.push_back(r);
@@ -126,13 +131,23 @@ template <class S> RobotFile<S> readRobot(const std::filesystem::path& file) {
 
 template <class S> JointVector<S> parseJoints(const std::string& text, const RobotFile<S>& rf) {
   std::vector<S> vals;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
+  // Every comma separates two entries: "0,0," has an empty third entry (refused), not two values.
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = text.find(',', start);
+    std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     // The list's own syntax allows spaces around an entry ("0, 0.5"); the number reader does not.
     const std::size_t b = item.find_first_not_of(" \t"), e = item.find_last_not_of(" \t");
     item = b == std::string::npos ? std::string() : item.substr(b, e - b + 1);
-    vals.push_back(parseDecimal<S>(item, "--joints value " + std::to_string(vals.size() + 1)));
+    const std::string where = "--joints value " + std::to_string(vals.size() + 1);
+    if (item.empty())
+      throw InvalidInput(where + ": empty" +
+                         std::string(comma == std::string::npos && !vals.empty() ? " (a trailing comma?)" : ""));
+    vals.push_back(parseDecimal<S>(item, where));
+    if (vals.size() > limits::maxJoints)
+      throw InvalidInput("--joints: more than " + std::to_string(limits::maxJoints) + " values");
+    if (comma == std::string::npos) break;
+    start = comma + 1;
   }
   if (int(vals.size()) != rf.robot.dof())
     throw InvalidInput("--joints: " + std::to_string(vals.size()) + " values given, the robot has " +

@@ -328,7 +328,7 @@ const SceneOutput* SceneFile::output(std::string_view name) const {
 }
 
 SceneFile parseScene(const std::string& text, const std::string& origin, const std::filesystem::path& folder) {
-  const json j = parseJson(text, origin, DuplicateKeys::Reject);
+  const json j = parseJson(text, origin);
   const KeyPath root(origin);
   if (!j.is_object()) throw InvalidInput(origin + ": a scene must be a JSON object");
   checkKeys(j, {"entities", "outputs", "description"}, origin, "(a scene has entities, outputs, description)");

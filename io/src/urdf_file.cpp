@@ -1,5 +1,6 @@
 // The non-template part of urdf_file.hpp (urdfdom's parse under one lock); the readers: urdf_file_impl.hpp.
 #include "urdf_file_impl.hpp"
+#include "urdf_scan.hpp"
 
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/tolerance.hpp"
@@ -32,6 +33,9 @@ std::mutex parseMutex;  // console_bridge's handler is global
 }  // namespace
 
 urdf::ModelInterfaceSharedPtr detail::parseUrdfModel(const std::string& xml, const std::string& origin) {
+  // The text, its size and its joint graph first (urdf_scan.hpp): TinyXML and urdfdom see only a
+  // well-formed, bounded tree of links.
+  checkUrdfText(xml, origin);
   std::lock_guard<std::mutex> lock(parseMutex);
   Collect collect;
   console_bridge::useOutputHandler(&collect);

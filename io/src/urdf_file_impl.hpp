@@ -16,8 +16,9 @@
 namespace soma::io {
 
 namespace detail {
-/// urdfdom's parse of `xml`, its console_bridge messages in the InvalidInput (urdf_file.cpp: one
-/// mutex for all scalars, console_bridge's handler being global).
+/// urdfdom's parse of `xml` after checkUrdfText (urdf_scan.hpp: the text, its size and its joint
+/// graph, a tree), its console_bridge messages in the InvalidInput (urdf_file.cpp: one mutex for
+/// all scalars, console_bridge's handler being global).
 urdf::ModelInterfaceSharedPtr parseUrdfModel(const std::string& xml, const std::string& origin);
 }  // namespace detail
 
@@ -75,7 +76,7 @@ RobotFile<S> parseUrdf(const std::string& xml, const std::string& origin, const 
     }
   }
   if (tipLink == root) throw InvalidInput(origin + ": no chain: the tip link \"" + tipLink->name + "\" is the root");
-  // Joints from the tip up to the root, then reversed.
+  // Joints from the tip up to the root, then reversed (the joint graph is a tree: checkUrdfText).
   std::vector<urdf::JointConstSharedPtr> chain;
   for (urdf::LinkConstSharedPtr l = tipLink; l != root;) {
     if (!l->parent_joint) throw InvalidInput(origin + ": link \"" + l->name + "\" has no parent joint");

@@ -1,5 +1,6 @@
 // The robot, platform and planar scene readers: values read as written (decimal strings exact in S),
 // and the number reader's errors reported with the file and the key path of the value.
+#include "soma/io/input_limits.hpp"
 #include "soma/io/planar_scene_file.hpp"
 #include "soma/io/platform_file.hpp"
 #include "soma/io/robot_file.hpp"
@@ -14,6 +15,7 @@ namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (t
 using namespace soma;
 using namespace soma::io;
 using Catch::Contains;
+using Catch::StartsWith;
 
 namespace {
 using soma::test::repoFile;
@@ -44,13 +46,37 @@ TEMPLATE_TEST_CASE("robot file: decimal strings exact in S, number errors with t
   CHECK(q(1) == fromString<S>("-0.25"));
   CHECK_THROWS_WITH(parseJoints<S>("0x10,0", rf), "--joints value 1: \"0x10\" is not a decimal number (hexadecimal)");
   CHECK_THROWS_WITH(parseJoints<S>("0,nan", rf), Contains("--joints value 2: \"nan\" is not a decimal number"));
-  CHECK_THROWS_WITH(parseJoints<S>("0,", rf), Contains("--joints: 1 values given, the robot has 2 joints"));
+  // Every comma separates two entries: a trailing comma is an empty entry, not the end of the list.
+  CHECK_THROWS_WITH(parseJoints<S>("0,", rf), "--joints value 2: empty (a trailing comma?)");
+  CHECK_THROWS_WITH(parseJoints<S>("0,0,", rf), "--joints value 3: empty (a trailing comma?)");
+  CHECK_THROWS_WITH(parseJoints<S>(",0", rf), "--joints value 1: empty");
+  CHECK_THROWS_WITH(parseJoints<S>("0,,0", rf), "--joints value 2: empty");
+  CHECK_THROWS_WITH(parseJoints<S>("", rf), "--joints value 1: empty");
+  CHECK_THROWS_WITH(parseJoints<S>("0", rf), "--joints: 1 values given, the robot has 2 joints");
 }
 
 TEST_CASE("robot file: 3.5e38 is a length in double, not in float", "[io][robot]") {
   CHECK(parseRobot<double>(twoR("0").replace(twoR("0").find("\"a\": 1"), 6, "\"a\": \"3.5e38\""), "r").robot.dof() == 2);
   CHECK_THROWS_WITH(parseRobot<float>(twoR("0").replace(twoR("0").find("\"a\": 1"), 6, "\"a\": \"3.5e38\""), "r"),
-                    "r: joints[0].a: \"3.5e38\" is outside the range of float (it overflows to infinity)");
+                    StartsWith("r: joints[0].a: \"3.5e38\" is outside the range of float (it overflows to infinity"));
+}
+
+TEST_CASE("robot file: the joint count is bounded (limits::maxJoints), unknown keys everywhere", "[io][robot]") {
+  auto robot = [](std::size_t joints) {
+    std::string s = R"({"convention": "dh", "joints": [)";
+    for (std::size_t k = 0; k < joints; ++k) s += std::string(k ? "," : "") + R"({"a": 1, "alpha": 0, "d": 0, "theta": 0})";
+    return s + "]}";
+  };
+  CHECK(parseRobot<double>(robot(limits::maxJoints), "r.json").robot.dof() == int(limits::maxJoints));
+  CHECK_THROWS_WITH(parseRobot<double>(robot(limits::maxJoints + 1), "r.json"),
+                    "r.json: joints: 1001 joints, more than the 1000 soma reads");
+  // A POE joint and a link of inertial data name their unknown keys too.
+  CHECK_THROWS_WITH(parseRobot<double>(R"({"convention": "poe", "home": {"rotation": [[1,0,0],[0,1,0],[0,0,1]],
+      "translation": [0,0,0]}, "joints": [{"type": "R", "axis": [0,0,1], "point": [0,0,0], "pont": 1}]})", "p.json"),
+                    "p.json: joint 1: unknown field \"pont\" (a poe joint has type, axis, point, offset, limits)");
+  CHECK_THROWS_WITH(parseRobot<double>(R"({"convention": "dh", "joints": [{"a": 1, "alpha": 0, "d": 0, "theta": 0}],
+      "links": [{"mass": 1, "com": [0,0,0], "inertia": [1,1,1,0,0,0], "colour": 1}]})", "l.json"),
+                    "l.json: link 1: unknown field \"colour\" (a link has mass, com, inertia)");
 }
 
 TEMPLATE_TEST_CASE("platform file: the general platform; number errors with the key path", "[io][platform]",
@@ -93,8 +119,26 @@ TEST_CASE("planar scene file: positions, circle points and a 4-bar, in radians",
   CHECK(fb.fourbar->crankAngle == 1.0);
   CHECK(fb.fourbar->crankRates == std::array<double, 4>{1.0, 0.3, -0.2, 0});  // the rate not given is 0
   CHECK(fb.fourbar->mode == 1);
-  CHECK_THROWS_WITH(readPlanarScene(dir / "bad_field.json"), "position 1: missing \"angle\"");
+  CHECK_THROWS_WITH(readPlanarScene(dir / "bad_field.json"), (dir / "bad_field.json").string() + ": position 1: missing \"angle\"");
   CHECK_THROWS_WITH(readPlanarScene(dir / "does_not_exist.json"), Contains("cannot read scene file"));
+}
+
+TEST_CASE("planar scene file: unknown keys, and the mode read as the integer written", "[io][planar]") {
+  const std::string fourbar = R"("fourbar": {"ground": [[0, 0], [3, 0]], "crank": 1.2, "coupler": 2.5, "rocker": 2.0})";
+  CHECK(parsePlanarScene("{" + fourbar + R"(, "mode": -1})", "s.json").fourbar->mode == -1);
+  // 4294967297 = 2^32 + 1 was taken as 1 (issue 24): the integer is read as written.
+  CHECK_THROWS_WITH(parsePlanarScene("{" + fourbar + R"(, "mode": 4294967297})", "s.json"),
+                    "\"mode\" must be 1 or -1 (assembly mode), got 4294967297");
+  CHECK_THROWS_WITH(parsePlanarScene("{" + fourbar + R"(, "mode": 0.5})", "s.json"), "mode: 0.5 is not an integer");
+  CHECK_THROWS_WITH(parsePlanarScene("{" + fourbar + R"(, "bogus": 1})", "s.json"),
+                    "scene: unknown field \"bogus\" (a 4-bar scene has fourbar, crank_angle, mode, crank_rates, angles)");
+  CHECK_THROWS_WITH(parsePlanarScene(R"({"fourbar": {"ground": [[0, 0], [3, 0]], "crank": 1, "coupler": 2, "rocker": 2,
+      "coupler": 3}})", "s.json"), "s.json: fourbar.coupler: the key \"coupler\" is given twice in one object");
+  CHECK_THROWS_WITH(parsePlanarScene(R"({"fourbar": {"ground": [[0, 0], [3, 0]], "crank": 1, "coupler": 2, "rocker": 2,
+      "coupler_pt": [0, 0]}})", "s.json"), Contains("fourbar: unknown field \"coupler_pt\""));
+  CHECK_THROWS_WITH(parsePlanarScene(R"({"positions": [{"x": 0, "y": 0, "angle": 0, "z": 1}]})", "s.json"),
+                    "positions[0]: unknown field \"z\" (a position has x, y, angle)");
+  CHECK_THROWS_WITH(parsePlanarScene(R"({"positions": [], "fourbar": {}})", "s.json"), Contains("not both"));
 }
 
 }  // namespace SOMA_UNITY_ID

@@ -72,11 +72,11 @@ TEST_CASE("scene file: references, kinds and cycles are checked before anything 
   // nlohmann would keep the second "arm": a scene rejects the repeat (and a repeated output name).
   CHECK_THROWS_WITH(scene(R"("solve": {"kind": "ik", "robot": "arm", "pose": "goal"})",
                           kRobots + R"(, "arm": {"kind": "point", "at": [0, 0, 0]})"),
-                    "scene.json: entities: the key \"arm\" is given twice");
+                    "scene.json: entities.arm: the key \"arm\" is given twice in one object");
   CHECK_THROWS_WITH(scene(R"("s": {"kind": "ik", "robot": "arm", "pose": "goal"}, "s": {"kind": "ik", "robot": "arm", "pose": "goal"})"),
-                    "scene.json: outputs: the key \"s\" is given twice");
+                    "scene.json: outputs.s: the key \"s\" is given twice in one object");
   CHECK_THROWS_WITH(scene(R"("s": {"kind": "ik", "robot": "arm", "pose": "goal", "kind": "fk"})"),
-                    "scene.json: outputs.s: the key \"kind\" is given twice");
+                    "scene.json: outputs.s.kind: the key \"kind\" is given twice in one object");
   CHECK_THROWS_WITH(scene(R"("solve": {"kind": "ik", "robot": "arm", "pose": "goal", "method": "simplex"})"),
                     Contains("scene.json: outputs.solve.method: \"simplex\" is not one of auto"));
   CHECK_THROWS_WITH(scene(R"("f": {"kind": "figure", "png": "x.png", "draw": ["nobody"]})"),

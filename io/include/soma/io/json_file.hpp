@@ -29,18 +29,12 @@ class KeyPath {
 /// The text of `file`. InvalidInput "<file>: cannot open the <what> file" when it cannot be read.
 std::string readTextFile(const std::filesystem::path& file, std::string_view what);
 
-/// What a parse does with an object's repeated key: nlohmann keeps the last one (Keep, the other
-/// readers); a scene rejects it (Reject: InvalidInput "<origin>: <key path>: the key "k" is given twice").
-enum class DuplicateKeys { Keep, Reject };
-
 /// JSON text → document. A syntax error is nlohmann::json::parse_error (for a reader with its own
 /// message); a JSON number beyond a double (it overflows, or a non-zero value underflows to 0) is an
 /// InvalidInput naming `origin`, the key path and the number.
-nlohmann::json parseJsonText(const std::string& text, const std::string& origin,
-                             DuplicateKeys duplicates = DuplicateKeys::Keep);
+nlohmann::json parseJsonText(const std::string& text, const std::string& origin);
 /// As parseJsonText, with a syntax error as InvalidInput "<origin>: not valid JSON (<parser's message>)".
-nlohmann::json parseJson(const std::string& text, const std::string& origin,
-                         DuplicateKeys duplicates = DuplicateKeys::Keep);
+nlohmann::json parseJson(const std::string& text, const std::string& origin);
 
 /// Every key of the object `j` is one of `allowed`; else InvalidInput
 /// "<where>: unknown field "<key>"" followed by " <hint>" when a hint is given.

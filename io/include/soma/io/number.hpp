@@ -8,8 +8,17 @@
 //    (rounded once more in float). A finer scalar needs decimal strings for digits beyond double.
 //  * Rejected, with a message naming the key path and the value: hexadecimal ("0x10"), NaN and
 //    infinity ("nan", "inf", "infinity"), an empty string, leading or trailing spaces or other
-//    characters, a value S cannot hold (it overflows to ±∞ in S, or a non-zero value underflows to
-//    0 in S; subnormal values are kept), and a JSON value that is not a number or a string.
+//    characters, a value S cannot hold, and a JSON value that is not a number or a string.
+//  * What S holds (holdsText<S>() says it in every range message): 0 and the magnitudes from S's
+//    smallest normal number to its largest (float 1.18e-38 … 3.40e38, double 2.23e-308 … 1.80e308,
+//    long double and float128 3.36e-4932 … 1.19e4932, mpfr 2^(emin−1) … 2^emax: about
+//    1e-323228497 … 1e323228496). A value beyond the largest overflows; a non-zero value below the
+//    smallest normal is refused too: it would underflow to 0 or be a subnormal that keeps fewer
+//    than S's significant bits (1e-320 in double keeps 11 of 53), a silent loss of precision. A
+//    JSON number is a double (parseJsonText refuses a subnormal one), so a value below 2.23e-308
+//    reaches long double, float128 or mpfr only as a decimal string ("1e-320").
+//  * Integers (flags such as --bits, fields such as "mode"): parseInteger/readInteger, the same
+//    decimal grammar ("16", "1e3"), the value an integer within the caller's bounds.
 #include "soma/algebra/scalar.hpp"
 
 #include <nlohmann/json_fwd.hpp>
@@ -37,14 +46,31 @@ template <class S> S parseDecimal(std::string_view text, const std::string& wher
 template <class S>
 S readNumber(const nlohmann::json& value, const std::string& where, NumberSource* source = nullptr);
 
+/// An integer written in decimal (parseDecimal's grammar: "16", "+3", "1e3", "2.0"), exactly,
+/// within [lo, hi]. InvalidInput naming `where` for any other text, a fraction ("2.5 is not an
+/// integer") or a value out of bounds ("100001 is outside 16 … 8192"): decided on the text, never
+/// on a rounded value (4294967297 is not 1).
+long long parseInteger(std::string_view text, const std::string& where, long long lo, long long hi);
+/// A JSON integer, a JSON number with an integral value, or a decimal string, as parseInteger.
+long long readInteger(const nlohmann::json& value, const std::string& where, long long lo, long long hi);
+
+/// What S holds, for messages: "float holds 0 and magnitudes from 1.17549435e-38 (its smallest
+/// normal number) to 3.40282347e+38".
+template <class S> std::string holdsText();
+
 namespace detail {
 /// A digit 1–9 before the exponent: the decimal text is not zero (an underflow to 0 is an error).
 bool decimalIsNonZero(std::string_view text);
+/// [+|-] digits [. digits] [(e|E) [+|-] digits], with at least one digit before the exponent.
+bool isDecimal(std::string_view text);
+/// Why `text` is not a decimal number, for a message (" (hexadecimal)", " (empty)", or "").
+std::string decimalDefect(std::string_view text);
 }  // namespace detail
 
 #define SOMA_IO_NUMBER_EXTERN(S)                                                          \
   extern template S parseDecimal<S>(std::string_view, const std::string&);                \
-  extern template S readNumber<S>(const nlohmann::json&, const std::string&, NumberSource*);
+  extern template S readNumber<S>(const nlohmann::json&, const std::string&, NumberSource*); \
+  extern template std::string holdsText<S>();
 SOMA_FOR_EACH_SCALAR(SOMA_IO_NUMBER_EXTERN)
 #undef SOMA_IO_NUMBER_EXTERN
 

@@ -41,7 +41,10 @@ struct PlanarScene {
   std::optional<PlanarFourBarInput> fourbar;  ///< a 4-bar scene
 };
 
-/// Read a scene file. InvalidInput "cannot read scene file '<file>'" when it cannot be read.
+/// Read a scene file. InvalidInput "cannot read scene file '<file>'" when it cannot be read; every
+/// other message starts with the file and names the field. Unknown keys are errors.
 PlanarScene readPlanarScene(const std::filesystem::path& file);
+/// Parse scene JSON text; `origin` names it in messages (as the file does for readPlanarScene).
+PlanarScene parsePlanarScene(const std::string& text, const std::string& origin);
 
 }  // namespace soma::io
