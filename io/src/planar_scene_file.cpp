@@ -78,11 +78,15 @@ PlanarScene readPlanarScene(const std::filesystem::path& file) {
   if (!is) throw InvalidInput("cannot read scene file '" + file.string() + "'");
   std::stringstream text;
   text << is.rdbuf();
+  return parsePlanarScene(text.str(), file.string());
+}
+
+PlanarScene parsePlanarScene(const std::string& text, const std::string& origin) {
   json in;
   try {
-    in = parseJsonText(text.str(), file.string());
+    in = parseJsonText(text, origin);
   } catch (const json::parse_error& e) {
-    throw InvalidInput("scene file '" + file.string() + "' is not valid JSON: " + e.what());
+    throw InvalidInput("scene file '" + origin + "' is not valid JSON: " + e.what());
   }
   if (!in.is_object()) throw InvalidInput("scene file: expected a JSON object with \"positions\" or \"fourbar\"");
   PlanarScene s;

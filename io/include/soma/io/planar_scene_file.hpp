@@ -43,5 +43,7 @@ struct PlanarScene {
 
 /// Read a scene file. InvalidInput "cannot read scene file '<file>'" when it cannot be read.
 PlanarScene readPlanarScene(const std::filesystem::path& file);
+/// The same from the file's text; `origin` names it in messages (a scene's planar-mechanism entity).
+PlanarScene parsePlanarScene(const std::string& text, const std::string& origin);
 
 }  // namespace soma::io
