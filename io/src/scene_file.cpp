@@ -291,6 +291,21 @@ void checkCycles(const SceneFile& s) {
 
 }  // namespace
 
+namespace {
+// The fields every output's JSON starts with (scene_output.hpp), for the outputs computed in double.
+json doubleOutputHead(const SceneOutput& o, const std::string& method, double seconds, double residual, bool ok) {
+  json j;
+  j["output"] = o.name;
+  j["kind"] = std::string(sceneOutputKindName(o.kind));
+  j["method"] = method;
+  j["scalar"] = "double";
+  j["seconds"] = seconds;
+  j["residual"] = residual;
+  j["ok"] = ok;
+  return j;
+}
+}  // namespace
+
 PlanarScene scenePlanarMechanism(const SceneEntity& e) {
   try {
     if (e.file) return readPlanarScene(*e.file);
@@ -304,14 +319,7 @@ PlanarScene scenePlanarMechanism(const SceneEntity& e) {
 
 std::string burmesterOutputJson(const SceneOutput& o, const std::vector<BurmesterPairRecord>& pairs, int complexPairs,
                                 double residual, double seconds, bool ok) {
-  json j;
-  j["output"] = o.name;
-  j["kind"] = "burmester";
-  j["method"] = "Burmester synthesis (resultant of two centre-point cubics, Newton polish)";
-  j["scalar"] = "double";
-  j["seconds"] = seconds;
-  j["residual"] = residual;
-  j["ok"] = ok;
+  json j = doubleOutputHead(o, "Burmester synthesis (resultant of two centre-point cubics, Newton polish)", seconds, residual, ok);
   j["mechanism"] = o.mechanism;
   j["expected_count"] = 4;
   j["count"] = pairs.size();
@@ -325,14 +333,7 @@ std::string burmesterOutputJson(const SceneOutput& o, const std::vector<Burmeste
 }
 
 std::string reportOutputJson(const SceneOutput& o, double seconds) {
-  json j;
-  j["output"] = o.name;
-  j["kind"] = "report";
-  j["method"] = "HTML";
-  j["scalar"] = "double";
-  j["seconds"] = seconds;
-  j["residual"] = 0;
-  j["ok"] = true;
+  json j = doubleOutputHead(o, "HTML", seconds, 0, true);
   j["html"] = o.html.string();
   j["outputs"] = o.reported;
   return j.dump();
@@ -382,14 +383,7 @@ std::string sceneReportHtml(const SceneFile& s, const SceneOutput& report, const
 }
 
 std::string cuspidalOutputJson(const SceneOutput& o, const CuspidalRecord& c) {
-  json j;
-  j["output"] = o.name;
-  j["kind"] = "cuspidal";
-  j["method"] = c.method;
-  j["scalar"] = "double";
-  j["seconds"] = c.seconds;
-  j["residual"] = c.residual;
-  j["ok"] = true;
+  json j = doubleOutputHead(o, c.method, c.seconds, c.residual, true);
   j["robot"] = o.robot;
   j["cuspidal"] = c.cuspidal;
   j["six_r"] = c.sixR;
@@ -408,14 +402,7 @@ std::string cuspidalOutputJson(const SceneOutput& o, const CuspidalRecord& c) {
 }
 
 std::string figureOutputJson(const SceneOutput& o, const std::vector<std::string>& drawn, double seconds) {
-  json j;
-  j["output"] = o.name;
-  j["kind"] = "figure";
-  j["method"] = "OSMesa";
-  j["scalar"] = "double";
-  j["seconds"] = seconds;
-  j["residual"] = 0;
-  j["ok"] = true;
+  json j = doubleOutputHead(o, "OSMesa", seconds, 0, true);
   j["png"] = o.png.string();
   j["width"] = o.width;
   j["height"] = o.height;
