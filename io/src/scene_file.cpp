@@ -10,6 +10,7 @@
 #include "soma/io/scene_output.hpp"
 #include "soma/io/urdf_file.hpp"
 
+#include <algorithm>
 #include <functional>
 #include <map>
 
@@ -24,7 +25,8 @@ struct EntityKindInfo {
 };
 constexpr EntityKindInfo kEntityKinds[] = {
     {SceneEntityKind::Robot, "robot"}, {SceneEntityKind::Pose, "pose"},   {SceneEntityKind::Platform, "platform"},
-    {SceneEntityKind::Point, "point"}, {SceneEntityKind::Line, "line"},   {SceneEntityKind::Screw, "screw"}};
+    {SceneEntityKind::Point, "point"}, {SceneEntityKind::Line, "line"},   {SceneEntityKind::Screw, "screw"},
+    {SceneEntityKind::PlanarMechanism, "planar-mechanism"}};
 struct OutputKindInfo {
   SceneOutputKind kind;
   std::string_view name;
@@ -35,7 +37,9 @@ constexpr OutputKindInfo kOutputKinds[] = {{SceneOutputKind::Ik, "ik"},
                                            {SceneOutputKind::Cuspidal, "cuspidal"},
                                            {SceneOutputKind::Cylindroid, "cylindroid"},
                                            {SceneOutputKind::ScrewSystem, "screw-system"},
-                                           {SceneOutputKind::Figure, "figure"}};
+                                           {SceneOutputKind::Burmester, "burmester"},
+                                           {SceneOutputKind::Figure, "figure"},
+                                           {SceneOutputKind::Report, "report"}};
 
 template <class Table> std::string kindList(const Table& t) {
   std::string s;
@@ -75,7 +79,7 @@ SceneEntity parseEntity(const std::string& name, const json& j, const std::strin
   json body = j;
   body.erase("kind");
   const bool byFile = e.kind == SceneEntityKind::Robot || e.kind == SceneEntityKind::Pose ||
-                      e.kind == SceneEntityKind::Platform;
+                      e.kind == SceneEntityKind::Platform || e.kind == SceneEntityKind::PlanarMechanism;
   if (byFile && body.contains("file")) {
     if (e.kind == SceneEntityKind::Robot) checkKeys(body, {"file", "tip"}, where.str(), "(a robot by file has file, tip)");
     else checkKeys(body, {"file"}, where.str(), "(an entity given by file has only kind and file)");
@@ -88,6 +92,10 @@ SceneEntity parseEntity(const std::string& name, const json& j, const std::strin
     case SceneEntityKind::Robot:
     case SceneEntityKind::Pose:
     case SceneEntityKind::Platform: break;  // the robot, pose and platform readers check the body
+    case SceneEntityKind::PlanarMechanism:
+      checkKeys(body, {"positions", "circle_points", "angles", "fourbar", "crank_angle", "mode", "crank_rates"}, where.str(),
+                "(a planar mechanism is a planar scene file's body: positions or fourbar)");
+      break;
     case SceneEntityKind::Point: checkKeys(body, {"at"}, where.str(), "(a point has \"at\": [x, y, z])"); break;
     case SceneEntityKind::Line:
       checkKeys(body, {"point", "direction", "through"}, where.str(),
@@ -158,6 +166,11 @@ SceneOutput parseOutput(const std::string& name, const json& j, const std::strin
         o.witness = j["witness"].get<bool>();
       }
       break;
+    case SceneOutputKind::Burmester:
+      checkKeys(j, {"kind", "mechanism", "needs"}, where.str(),
+                "(a burmester output has mechanism, needs; it works in double)");
+      o.mechanism = entityRef(j, "mechanism", where);
+      break;
     case SceneOutputKind::ScrewSystem: {
       checkKeys(j, {"kind", "screws", "scalar", "bits", "needs"}, where.str(),
                 "(a screw-system output has screws, scalar, bits, needs)");
@@ -168,6 +181,21 @@ SceneOutput parseOutput(const std::string& name, const json& j, const std::strin
       for (std::size_t i = 0; i < s.size(); ++i) {
         if (!s[i].is_string()) throw InvalidInput(where.key("screws").index(i).str() + ": expected a string");
         o.screws.push_back(s[i].get<std::string>());
+      }
+      break;
+    }
+    case SceneOutputKind::Report: {
+      checkKeys(j, {"kind", "html", "outputs", "needs"}, where.str(), "(a report output has html, outputs, needs)");
+      if (!j.contains("html")) throw InvalidInput(where.str() + ": missing \"html\" (the HTML file to write)");
+      o.html = stringField(j, "html", where);
+      if (o.html.empty()) throw InvalidInput(where.key("html").str() + ": an empty file name");
+      if (j.contains("outputs")) {
+        const json& d = j["outputs"];
+        if (!d.is_array() || d.empty()) throw InvalidInput(where.key("outputs").str() + ": expected a non-empty array of output names");
+        for (std::size_t i = 0; i < d.size(); ++i) {
+          if (!d[i].is_string()) throw InvalidInput(where.key("outputs").index(i).str() + ": expected a string");
+          o.reported.push_back(d[i].get<std::string>());
+        }
       }
       break;
     }
@@ -263,15 +291,99 @@ void checkCycles(const SceneFile& s) {
 
 }  // namespace
 
-std::string cuspidalOutputJson(const SceneOutput& o, const CuspidalRecord& c) {
+namespace {
+// The fields every output's JSON starts with (scene_output.hpp), for the outputs computed in double.
+json doubleOutputHead(const SceneOutput& o, const std::string& method, double seconds, double residual, bool ok) {
   json j;
   j["output"] = o.name;
-  j["kind"] = "cuspidal";
-  j["method"] = c.method;
+  j["kind"] = std::string(sceneOutputKindName(o.kind));
+  j["method"] = method;
   j["scalar"] = "double";
-  j["seconds"] = c.seconds;
-  j["residual"] = c.residual;
-  j["ok"] = true;
+  j["seconds"] = seconds;
+  j["residual"] = residual;
+  j["ok"] = ok;
+  return j;
+}
+}  // namespace
+
+PlanarScene scenePlanarMechanism(const SceneEntity& e) {
+  try {
+    if (e.file) return readPlanarScene(*e.file);
+    return parsePlanarScene(e.body, e.where);
+  } catch (const InvalidInput& x) {
+    const std::string m = x.what();
+    if (m.find(e.file ? e.file->string() : e.where) != std::string::npos) throw;
+    throw InvalidInput(e.where + ": " + m);
+  }
+}
+
+std::string burmesterOutputJson(const SceneOutput& o, const std::vector<BurmesterPairRecord>& pairs, int complexPairs,
+                                double residual, double seconds, bool ok) {
+  json j = doubleOutputHead(o, "Burmester synthesis (resultant of two centre-point cubics, Newton polish)", seconds, residual, ok);
+  j["mechanism"] = o.mechanism;
+  j["expected_count"] = 4;
+  j["count"] = pairs.size();
+  j["complex_count"] = complexPairs;
+  json a = json::array();
+  for (const BurmesterPairRecord& p : pairs)
+    a.push_back({{"centre", {p.centre[0], p.centre[1]}}, {"circle_point", {p.circle[0], p.circle[1]}}, {"radius", p.radius},
+                 {"residual", p.residual}});
+  j["pairs"] = a;
+  return j.dump();
+}
+
+std::string reportOutputJson(const SceneOutput& o, double seconds) {
+  json j = doubleOutputHead(o, "HTML", seconds, 0, true);
+  j["html"] = o.html.string();
+  j["outputs"] = o.reported;
+  return j.dump();
+}
+
+namespace {
+std::string escapeHtml(const std::string& s) {
+  std::string out;
+  for (const char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+}  // namespace
+
+std::string sceneReportHtml(const SceneFile& s, const SceneOutput& report, const std::vector<std::string>& outputJson) {
+  std::string h = "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" + escapeHtml(s.origin) + ": " +
+                  escapeHtml(report.name) + "</title>\n<style>body{font-family:sans-serif;max-width:60em;margin:2em auto}"
+                  "pre{background:#f4f4f4;padding:1em;overflow-x:auto}td,th{padding:0.2em 0.8em;text-align:left}</style>"
+                  "</head><body>\n<h1>" + escapeHtml(s.origin) + "</h1>\n<table><tr><th>output</th><th>kind</th><th>method</th>"
+                  "<th>scalar</th><th>residual</th><th>seconds</th><th>ok</th></tr>\n";
+  std::vector<json> outs;
+  for (const std::string& t : outputJson) outs.push_back(json::parse(t));
+  for (const json& j : outs)
+    h += "<tr><td><a href=\"#" + escapeHtml(j["output"]) + "\">" + escapeHtml(j["output"]) + "</a></td><td>" +
+         escapeHtml(j["kind"]) + "</td><td>" + escapeHtml(j["method"]) + "</td><td>" + escapeHtml(j["scalar"]) + "</td><td>" +
+         escapeHtml(json(j["residual"]).dump()) + "</td><td>" + escapeHtml(json(j["seconds"]).dump()) + "</td><td>" +
+         (j["ok"].get<bool>() ? "yes" : "<b>NO</b>") + "</td></tr>\n";
+  h += "</table>\n";
+  const std::filesystem::path folder = std::filesystem::absolute(report.html).parent_path();
+  for (const json& j : outs) {
+    h += "<h2 id=\"" + escapeHtml(j["output"]) + "\">" + escapeHtml(j["output"]) + " (" + escapeHtml(j["kind"]) + ")</h2>\n";
+    if (j["kind"] == "figure") {
+      const std::filesystem::path png = std::filesystem::absolute(j["png"].get<std::string>());
+      h += "<img src=\"" + escapeHtml(png.lexically_relative(folder).string()) + "\" width=\"" +
+           json(j["width"]).dump() + "\">\n";
+    }
+    h += "<pre>" + escapeHtml(j.dump(2)) + "</pre>\n";
+  }
+  return h + "</body></html>\n";
+}
+
+std::string cuspidalOutputJson(const SceneOutput& o, const CuspidalRecord& c) {
+  json j = doubleOutputHead(o, c.method, c.seconds, c.residual, true);
   j["robot"] = o.robot;
   j["cuspidal"] = c.cuspidal;
   j["six_r"] = c.sixR;
@@ -290,14 +402,7 @@ std::string cuspidalOutputJson(const SceneOutput& o, const CuspidalRecord& c) {
 }
 
 std::string figureOutputJson(const SceneOutput& o, const std::vector<std::string>& drawn, double seconds) {
-  json j;
-  j["output"] = o.name;
-  j["kind"] = "figure";
-  j["method"] = "OSMesa";
-  j["scalar"] = "double";
-  j["seconds"] = seconds;
-  j["residual"] = 0;
-  j["ok"] = true;
+  json j = doubleOutputHead(o, "OSMesa", seconds, 0, true);
   j["png"] = o.png.string();
   j["width"] = o.width;
   j["height"] = o.height;
@@ -346,10 +451,24 @@ SceneFile parseScene(const std::string& text, const std::string& origin, const s
     throw InvalidInput(root.key("outputs").str() + ": the scene asks for nothing (give at least one output)");
   for (const auto& [name, o] : j["outputs"].items())
     s.outputs.push_back(parseOutput(name, o, origin, KeyPath().key("outputs").key(name).str()));
+  // A report shows the outputs it names (every other non-report output when it names none): it
+  // needs them, so a report naming itself, or two reports naming each other, is a cycle.
+  for (SceneOutput& o : s.outputs) {
+    if (o.kind != SceneOutputKind::Report) continue;
+    if (o.reported.empty())
+      for (const SceneOutput& u : s.outputs)
+        if (u.kind != SceneOutputKind::Report) o.reported.push_back(u.name);
+    for (std::size_t i = 0; i < o.reported.size(); ++i) {
+      if (!s.output(o.reported[i]))
+        throw InvalidInput(o.where + ".outputs[" + std::to_string(i) + "]: no output named " + inQuotes(o.reported[i]));
+      if (std::find(o.needs.begin(), o.needs.end(), o.reported[i]) == o.needs.end()) o.needs.push_back(o.reported[i]);
+    }
+  }
   for (const SceneOutput& o : s.outputs) {
     if (!o.robot.empty()) checkReference(s, o, "robot", o.robot, SceneEntityKind::Robot);
     if (!o.pose.empty()) checkReference(s, o, "pose", o.pose, SceneEntityKind::Pose);
     if (!o.platform.empty()) checkReference(s, o, "platform", o.platform, SceneEntityKind::Platform);
+    if (!o.mechanism.empty()) checkReference(s, o, "mechanism", o.mechanism, SceneEntityKind::PlanarMechanism);
     for (std::size_t i = 0; i < o.screws.size(); ++i)
       checkReference(s, o, "screws[" + std::to_string(i) + "]", o.screws[i], SceneEntityKind::Screw);
     for (std::size_t i = 0; i < o.draw.size(); ++i)
@@ -378,6 +497,7 @@ void validateScene(const SceneFile& s) {
         case SceneEntityKind::Point: (void)scenePoint<double>(e); break;
         case SceneEntityKind::Line: (void)sceneLine<double>(e); break;
         case SceneEntityKind::Screw: (void)sceneScrew<double>(e); break;
+        case SceneEntityKind::PlanarMechanism: (void)scenePlanarMechanism(e); break;
       }
     }
   }
@@ -392,11 +512,19 @@ void validateScene(const SceneFile& s) {
         case SceneOutputKind::Fk: (void)sceneJoints<S>(o, sceneRobot<S>(*s.entity(o.robot))); break;
         case SceneOutputKind::Stewart: (void)scenePlatform<S>(*s.entity(o.platform)); break;
         case SceneOutputKind::Cuspidal: (void)sceneRobot<S>(*s.entity(o.robot)); break;
+        case SceneOutputKind::Burmester: {
+          const PlanarScene m = scenePlanarMechanism(*s.entity(o.mechanism));
+          if (m.positions.size() != 5)
+            throw InvalidInput(o.where + ".mechanism: a burmester output needs 5 positions, \"" + o.mechanism + "\" has " +
+                               std::to_string(m.positions.size()) + (m.fourbar ? " (it is a 4-bar)" : ""));
+          break;
+        }
         case SceneOutputKind::Cylindroid:
         case SceneOutputKind::ScrewSystem:
           for (const std::string& n : o.screws) (void)sceneScrew<S>(*s.entity(n));
           break;
-        case SceneOutputKind::Figure: break;  // its entities were read in double above
+        case SceneOutputKind::Figure:
+        case SceneOutputKind::Report: break;  // a figure's entities were read in double above
       }
     });
   }

@@ -5,6 +5,7 @@
 #include "soma/algebra/tolerance.hpp"
 #include "soma/geometry/cuspidal/cuspidality.hpp"
 #include "soma/geometry/lines/cylindroid.hpp"
+#include "soma/geometry/planar/burmester_synthesis.hpp"
 #include "soma/geometry/lines/screw_axis.hpp"
 #include "soma/geometry/parallel/solve_stewart.hpp"
 #include "soma/geometry/screws/identification.hpp"
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <fstream>
 #include <memory>
 
 #include <unistd.h>
@@ -138,6 +140,30 @@ template <class S> OutputResult SceneGraph::compute(const io::SceneOutput& o, co
       break;
     }
     case io::SceneOutputKind::Figure: break;  // SceneGraph::figure, in double
+    case io::SceneOutputKind::Report: break;  // SceneGraph::report
+    case io::SceneOutputKind::Burmester: {
+      // GF §5.4 in double: the Burmester pairs of 5 positions.
+      if constexpr (std::is_same_v<S, double>) {
+        const io::PlanarScene& m = node<io::PlanarScene>("planar-mechanism:" + o.mechanism + "[double]", reason,
+                                                         [&](const std::string&) { return io::scenePlanarMechanism(*scene_.entity(o.mechanism)); });
+        std::vector<SE2<double>> positions;
+        for (const io::PlanarPosition& p : m.positions) positions.push_back(SE2<double>(p.angle, Vec2<double>(p.x, p.y)));
+        const auto t0 = std::chrono::steady_clock::now();
+        const planar::BurmesterSynthesis<double> bs(positions);
+        int complexPairs = 0;
+        const std::vector<planar::BurmesterPair<double>> pairs = bs.burmesterPairs(&complexPairs);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        std::vector<io::BurmesterPairRecord> rec;
+        double worst = 0;
+        for (const planar::BurmesterPair<double>& p : pairs) {
+          rec.push_back({{p.centre(0), p.centre(1)}, {p.circle(0), p.circle(1)}, p.radius, p.residual});
+          worst = std::max(worst, p.residual);
+        }
+        r.ok = withinSqrtEps(worst);
+        r.json = io::burmesterOutputJson(o, rec, complexPairs, worst, seconds, r.ok);
+      }
+      break;
+    }
     case io::SceneOutputKind::Cuspidal: {
       // GF §5.2.3 in double (the analysis escalates its cusp points itself when ill-conditioned).
       if constexpr (std::is_same_v<S, double>) {
@@ -213,7 +239,9 @@ const OutputResult& SceneGraph::output(const io::SceneOutput& o, const std::stri
   return node<OutputResult>(outputNodeId(o), reason, [&](const std::string& id) {
     for (const std::string& n : o.needs) (void)output(*scene_.output(n), via(reason, id));
     if (o.kind == io::SceneOutputKind::Figure) return figure(o, via(reason, id));
-    if (o.kind == io::SceneOutputKind::Cuspidal) return compute<double>(o, via(reason, id));
+    if (o.kind == io::SceneOutputKind::Report) return report(o, via(reason, id));
+    if (o.kind == io::SceneOutputKind::Cuspidal || o.kind == io::SceneOutputKind::Burmester)
+      return compute<double>(o, via(reason, id));  // analyses in double
     setMpfrBits(o.bits);
     return withScalar(o.scalar, [&]<class S>() { return compute<S>(o, via(reason, id)); });
   });
@@ -229,7 +257,8 @@ OutputResult SceneGraph::figure(const io::SceneOutput& o, const std::string& rea
   render::Scene all;
   std::vector<std::string> names;
   for (const io::SceneEntity& e : scene_.entities) {
-    if (!drawn(e.name) || e.kind == io::SceneEntityKind::Pose) continue;  // a pose is drawn by the robot reaching it
+    // A pose is drawn by the robot reaching it; a planar mechanism has its own 2-D figure (soma planar).
+    if (!drawn(e.name) || e.kind == io::SceneEntityKind::Pose || e.kind == io::SceneEntityKind::PlanarMechanism) continue;
     names.push_back(e.name);
     const render::Scene& part = node<render::Scene>("tessellation:" + e.name, reason, [&](const std::string& id) {
       const std::string why = via(reason, id);
@@ -271,7 +300,8 @@ OutputResult SceneGraph::figure(const io::SceneOutput& o, const std::string& rea
         case io::SceneEntityKind::Screw:
           return screwTessellation(screw<double>(e.name, why), kFigureHalfLength, e.name);
         case io::SceneEntityKind::Point: return pointTessellation(io::scenePoint<double>(e), e.name);
-        case io::SceneEntityKind::Pose: break;
+        case io::SceneEntityKind::Pose:
+        case io::SceneEntityKind::PlanarMechanism: break;
       }
       return render::Scene{};
     });
@@ -311,6 +341,27 @@ OutputResult SceneGraph::figure(const io::SceneOutput& o, const std::string& rea
   OutputResult r;
   r.name = o.name;
   r.json = io::figureOutputJson(o, names, seconds);
+  return r;
+}
+
+OutputResult SceneGraph::report(const io::SceneOutput& o, const std::string& reason) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<std::string> shown;
+  for (const std::string& n : o.reported) shown.push_back(output(*scene_.output(n), reason).json);  // built as its needs
+  const std::filesystem::path partial = o.html.string() + "." + std::to_string(::getpid()) + ".partial";
+  {
+    std::ofstream out(partial);
+    out << io::sceneReportHtml(scene_, o, shown);
+    if (!out) {
+      std::error_code ec;
+      std::filesystem::remove(partial, ec);
+      throw InvalidInput(o.where + ".html: cannot write " + o.html.string());
+    }
+  }
+  pending_.push_back({outputNodeId(o), partial, o.html});
+  OutputResult r;
+  r.name = o.name;
+  r.json = io::reportOutputJson(o, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   return r;
 }
 

@@ -25,8 +25,8 @@ struct BadFile {
   const char* message;
 };
 const BadFile kBadFiles[] = {
-    {"bad_entity_kind.json", "entities.arm.kind: unknown entity kind \"robto\" (one of robot, pose, platform, point, line, screw)"},
-    {"bad_output_kind.json", "outputs.solve.kind: unknown output kind \"inverse\" (one of ik, fk, stewart, cuspidal, cylindroid, screw-system, figure)"},
+    {"bad_entity_kind.json", "entities.arm.kind: unknown entity kind \"robto\" (one of robot, pose, platform, point, line, screw, planar-mechanism)"},
+    {"bad_output_kind.json", "outputs.solve.kind: unknown output kind \"inverse\" (one of ik, fk, stewart, cuspidal, cylindroid, screw-system, burmester, figure, report)"},
     {"bad_unknown_key.json", "outputs.solve: unknown field \"metod\" (an ik output has robot, pose, method, scalar, bits, needs)"},
     {"bad_wrong_type.json", "outputs.solve.scalar: expected a string"},
     {"bad_nothing.json", "outputs: the scene asks for nothing (give at least one output)"},
@@ -83,6 +83,20 @@ TEST_CASE("scene file: references, kinds and cycles are checked before anything 
                     "scene.json: outputs.f.draw[0]: no entity named \"nobody\"");
   CHECK_THROWS_WITH(scene(R"("f": {"kind": "figure", "png": "x.png", "size": [10, 10]})"),
                     "scene.json: outputs.f.size: expected [width, height], integers in [16, 8192]");
+  CHECK_THROWS_WITH(scene(R"("b": {"kind": "burmester", "mechanism": "m"})",
+                          R"("m": {"kind": "planar-mechanism", "positions": [{"x": 0, "y": 0, "angle": 0}], "angel": 1})"),
+                    "scene.json: entities.m: unknown field \"angel\" (a planar mechanism is a planar scene file's body: positions or fourbar)");
+  const SceneFile three = scene(R"("b": {"kind": "burmester", "mechanism": "m"})",
+                                R"("m": {"kind": "planar-mechanism", "positions": [{"x": 0, "y": 0, "angle": 0},
+                                   {"x": 1, "y": 0, "angle": 0.1}, {"x": 2, "y": 0.5, "angle": 0.3}]})");
+  CHECK_THROWS_WITH(validateScene(three), "scene.json: outputs.b.mechanism: a burmester output needs 5 positions, \"m\" has 3");
+  // A report needs what it shows: naming itself is a cycle; naming a missing output an error.
+  CHECK_THROWS_WITH(scene(R"("r": {"kind": "report", "html": "r.html", "outputs": ["r"]})"),
+                    "scene.json: outputs.r.needs: a cycle between outputs: r → r");
+  CHECK_THROWS_WITH(scene(R"("r": {"kind": "report", "html": "r.html", "outputs": ["zz"]})"),
+                    "scene.json: outputs.r.outputs[0]: no output named \"zz\"");
+  CHECK(scene(R"("a": {"kind": "fk", "robot": "arm", "joints": [0, 0, 0, 0, 0, 0]}, "r": {"kind": "report", "html": "r.html"})")
+            .output("r")->needs == std::vector<std::string>{"a"});
   CHECK_THROWS_WITH(parseScene("[1, 2]", "scene.json"), "scene.json: a scene must be a JSON object");
   CHECK_THROWS_WITH(parseScene("{\"outputs\": ", "scene.json"), Contains("scene.json: not valid JSON"));
   CHECK_THROWS_WITH(scene(R"("solve": {"kind": "ik", "robot": "arm", "pose": "goal"})",

@@ -327,3 +327,24 @@ TEST_CASE("example scene cuspidal_3r_witness: 4 cusps; the witness's two posture
 }
 
 }  // namespace SOMA_UNITY_ID
+
+namespace SOMA_UNITY_ID {
+
+TEST_CASE("example scene burmester_five_positions: each circle point's 5 positions lie on its circle", "[scene][examples]") {
+  const json out = runScene("burmester_five_positions.json")["pairs"];
+  CHECK(out["expected_count"] == 4);
+  CHECK((out["count"].get<int>() + out["complex_count"].get<int>()) == 4);  // 4 pairs in all, complex ones in conjugates
+  CHECK(out["count"].get<int>() % 2 == 0);
+  const json& pos = fileJson("examples/scenes/burmester_five_positions.json")["entities"]["task"]["positions"];
+  for (const auto& p : out["pairs"]) {
+    const Eigen::Vector2d m(p["circle_point"][0].get<double>(), p["circle_point"][1].get<double>());
+    const Eigen::Vector2d c(p["centre"][0].get<double>(), p["centre"][1].get<double>());
+    for (const auto& q : pos) {
+      // The circle point moved by position q: R(angle) m + (x, y).
+      const Eigen::Vector2d at = Eigen::Rotation2Dd(double(q["angle"]) * M_PI / 180) * m + Eigen::Vector2d(q["x"], q["y"]);
+      CHECK((at - c).norm() == Approx(p["radius"].get<double>()).epsilon(1e-8));
+    }
+  }
+}
+
+}  // namespace SOMA_UNITY_ID

@@ -191,6 +191,28 @@ TEST_CASE("scene graph: a failing evaluation leaves no figure behind", "[scene][
   std::filesystem::remove(png);
 }
 
+TEST_CASE("scene graph: a report builds the outputs it shows, and writes its page at the end", "[scene][trace]") {
+  const auto html = std::filesystem::temp_directory_path() / "soma_scene_graph_report.html";
+  std::filesystem::remove(html);
+  const std::string text = R"({"entities": {"a": {"kind": "screw", "point": [0, 0, 0], "direction": [1, 0, 0], "pitch": 0.2},
+                                            "b": {"kind": "screw", "point": [0, 0, 1], "direction": [0, 1, 0], "pitch": -0.1}},
+                               "outputs": {"pencil": {"kind": "cylindroid", "screws": ["a", "b"]},
+                                           "span": {"kind": "screw-system", "screws": ["a", "b"]},
+                                           "page": {"kind": "report", "html": ")" + html.string() + R"(", "outputs": ["pencil"]}}})";
+  io::SceneFile s = io::parseScene(text, "report.json");
+  io::validateScene(s);
+  SceneGraph g(std::move(s));
+  const SceneResult r = g.evaluate({"page"});
+  CHECK(ids(r) == std::vector<std::string>{"screw:a[double]", "screw:b[double]", "cylindroid:pencil", "report:page"});
+  CHECK(r.trace[2].reason == "output page via report:page");
+  REQUIRE(r.written == std::vector<std::filesystem::path>{html});
+  std::ifstream in(html);
+  const std::string page((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK_THAT(page, Contains("<h2 id=\"pencil\">pencil (cylindroid)</h2>"));
+  CHECK_THAT(page, !Contains("span"));
+  std::filesystem::remove(html);
+}
+
 TEST_CASE("scene graph: an output that is not in the scene", "[scene]") {
   SceneGraph g = graph();
   CHECK_THROWS_AS(g.evaluate({"nope"}), InvalidInput);

@@ -7,7 +7,9 @@
 //   platform  {"file": PLATFORM.json} or inline, a platform file's body;
 //   point     {"at": [x, y, z]};
 //   line      {"point": [x, y, z], "direction": [x, y, z]} or {"through": [[x,y,z], [x,y,z]]};
-//   screw     {"coordinates": [ω; v]} or {"point", "direction", "pitch"} (moment v = q × ω + h ω).
+//   screw     {"coordinates": [ω; v]} or {"point", "direction", "pitch"} (moment v = q × ω + h ω);
+//   planar-mechanism  {"file": SCENE.json} or inline, a planar scene file's body (positions or a
+//             4-bar, as `soma planar` reads them; double).
 // Output kinds, each naming the entities it uses and, in "needs", the outputs it needs:
 //   ik          {"robot", "pose", "method", "scalar", "bits"}   every posture at the pose;
 //   fk          {"robot", "joints": [...], "scalar", "bits"}    the tool pose (joints in the robot's unit);
@@ -15,12 +17,15 @@
 //   cuspidal    {"robot", "witness": true|false}                 the 3R/6R cuspidality verdict (double),
 //               its cusp points and a witness path (GF §5.2.3);
 //   cylindroid  {"screws": [A, B], "scalar", "bits"}            pitches and principal screws;
+//   burmester   {"mechanism"}                                 the Burmester pairs of 5 positions (GF §5.4, double);
 //   screw-system {"screws": [A, ...], "scalar", "bits"}         the Gibson–Hunt type of their span,
 //               its parameters and canonical frame (GF ch. 8), on 6-vectors;
 //   figure      {"png": FILE, "draw": [ENTITY...], "size": [w, h]}   a PNG of the entities drawn
 //               (every entity when "draw" is absent): robots at the postures of the ik/fk outputs
 //               that use them, platforms at their stewart postures, lines, screws, points, and
-//               the cylindroids of the cylindroid outputs whose screws are drawn.
+//               the cylindroids of the cylindroid outputs whose screws are drawn;
+//   report      {"html": FILE, "outputs": [OUTPUT...]}           an HTML page of those outputs (every
+//               other output when absent), their figures shown; "outputs" count as "needs".
 // Relative "file" paths resolve against the scene file's folder. Everything is validated before
 // anything is computed (validateScene): unknown kinds and keys, duplicate keys, missing or
 // wrong-kind references, cycles between outputs, wrong types, a scene asking for nothing, and
@@ -31,6 +36,7 @@
 #include "soma/algebra/se3.hpp"
 #include "soma/geometry/lines/line.hpp"
 #include "soma/geometry/parallel/stewart.hpp"
+#include "soma/io/planar_scene_file.hpp"
 #include "soma/io/robot_file.hpp"
 
 #include <filesystem>
@@ -41,8 +47,8 @@
 
 namespace soma::io {
 
-enum class SceneEntityKind { Robot, Pose, Platform, Point, Line, Screw };
-enum class SceneOutputKind { Ik, Fk, Stewart, Cuspidal, Cylindroid, ScrewSystem, Figure };
+enum class SceneEntityKind { Robot, Pose, Platform, Point, Line, Screw, PlanarMechanism };
+enum class SceneOutputKind { Ik, Fk, Stewart, Cuspidal, Cylindroid, ScrewSystem, Burmester, Figure, Report };
 std::string_view sceneEntityKindName(SceneEntityKind k);
 std::string_view sceneOutputKindName(SceneOutputKind k);
 
@@ -63,7 +69,7 @@ struct SceneOutput {
   SceneOutputKind kind = SceneOutputKind::Ik;
   std::string where;                  ///< "scene.json: outputs.solve"
   std::string origin, path;           ///< "scene.json" and "outputs.solve"
-  std::string robot, pose, platform;  ///< entity names (those the kind uses)
+  std::string robot, pose, platform, mechanism;  ///< entity names (those the kind uses)
   std::vector<std::string> screws;    ///< cylindroid: two screw entities; screw-system: 1 to 6
   std::vector<std::string> needs;     ///< outputs evaluated before this one
   std::string method = "auto";        ///< ik, stewart
@@ -71,6 +77,8 @@ struct SceneOutput {
   int bits = 256;                     ///< mpfr precision
   std::string joints;                 ///< fk: the joint values (JSON text, read only by io)
   std::filesystem::path png;          ///< figure: the PNG to write (relative: to the working folder)
+  std::filesystem::path html;         ///< report: the HTML page to write (relative: to the working folder)
+  std::vector<std::string> reported;  ///< report: the outputs shown (also in needs)
   std::vector<std::string> draw;      ///< figure: the entities drawn (empty: every entity)
   int width = 1200, height = 900;     ///< figure: the image size in pixels
   bool witness = true;                ///< cuspidal: plan a witness path when cuspidal
@@ -100,6 +108,8 @@ template <class S> StewartPlatform<S> scenePlatform(const SceneEntity& e);
 template <class S> Vec3<S> scenePoint(const SceneEntity& e);
 template <class S> PluckerLine<S> sceneLine(const SceneEntity& e);
 template <class S> Vec6<S> sceneScrew(const SceneEntity& e);
+/// A planar-mechanism entity (double, as the planar scene reader reads it).
+PlanarScene scenePlanarMechanism(const SceneEntity& e);
 /// fk: the output's "joints" in S (radians/metres; the robot's angle unit applied).
 template <class S> JointVector<S> sceneJoints(const SceneOutput& o, const RobotFile<S>& robot);
 

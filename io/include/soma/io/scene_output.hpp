@@ -13,7 +13,9 @@
 #include "soma/geometry/serial/ik.hpp"
 #include "soma/io/scene_file.hpp"
 
+#include <array>
 #include <string>
+#include <vector>
 
 namespace soma::io {
 
@@ -42,6 +44,20 @@ struct CuspidalRecord {
   double seconds = 0, residual = 0;
 };
 std::string cuspidalOutputJson(const SceneOutput& o, const CuspidalRecord& c);
+/// burmester (GF §5.4): the real Burmester pairs of 5 positions: "expected_count" 4, "count",
+/// "complex_count", "pairs": [{"centre", "circle_point" (moving frame), "radius", "residual"}].
+struct BurmesterPairRecord {
+  std::array<double, 2> centre{}, circle{};
+  double radius = 0, residual = 0;
+};
+std::string burmesterOutputJson(const SceneOutput& o, const std::vector<BurmesterPairRecord>& pairs, int complexPairs,
+                                double residual, double seconds, bool ok);
+/// report: "html", "outputs" (the outputs shown).
+std::string reportOutputJson(const SceneOutput& o, double seconds);
+/// The report's HTML page: a table of the outputs (name, kind, method, scalar, residual, seconds,
+/// ok) and a section per output with its JSON (`outputJson`, in the report's order) and, for a
+/// figure, its PNG (linked relative to the page's folder).
+std::string sceneReportHtml(const SceneFile& s, const SceneOutput& report, const std::vector<std::string>& outputJson);
 /// figure: "png", "width", "height", "drawn" (the entities drawn), "seconds" (the render).
 std::string figureOutputJson(const SceneOutput& o, const std::vector<std::string>& drawn, double seconds);
 

@@ -42,7 +42,7 @@ struct OutputResult {
 struct SceneResult {
   std::vector<OutputResult> outputs;  ///< the asked outputs, in the scene's order
   std::vector<TraceEntry> trace;      ///< the nodes built by this evaluation, each when it was done
-  std::vector<std::filesystem::path> written;  ///< the figures written (each renamed into place at the end)
+  std::vector<std::filesystem::path> written;  ///< the figures and reports written (each renamed into place at the end)
   [[nodiscard]] bool ok() const;
   [[nodiscard]] const OutputResult* output(std::string_view name) const;
   /// Whether a node with this id was built (trace tests).
@@ -72,6 +72,7 @@ class SceneGraph {
   const OutputResult& output(const io::SceneOutput& o, const std::string& reason);
   template <class S> OutputResult compute(const io::SceneOutput& o, const std::string& via);
   OutputResult figure(const io::SceneOutput& o, const std::string& reason);
+  OutputResult report(const io::SceneOutput& o, const std::string& reason);
   SceneResult run(const std::vector<const io::SceneOutput*>& outputs);
 
   io::SceneFile scene_;
