@@ -139,3 +139,4 @@
 #include <soma/render/renderer.hpp>
 #include <soma/render/scene.hpp>
 #include <soma/render/shapes.hpp>
+#include <soma/render/svg.hpp>

@@ -303,11 +303,17 @@ SceneOutput parseOutput(const std::string& name, const json& j, const std::strin
       break;
     }
     case SceneOutputKind::Figure: {
-      checkKeys(j, {"kind", "png", "draw", "size", "needs"}, where.str(),
-                "(a figure output has png, draw, size, needs)");
-      if (!j.contains("png")) throw InvalidInput(where.str() + ": missing \"png\" (the PNG file to write)");
-      o.png = stringField(j, "png", where);
-      if (o.png.empty()) throw InvalidInput(where.key("png").str() + ": an empty file name");
+      checkKeys(j, {"kind", "png", "svg", "draw", "size", "needs"}, where.str(),
+                "(a figure output has png or svg, draw, size, needs)");
+      if (j.contains("png") && j.contains("svg")) throw InvalidInput(where.str() + ": give \"png\" or \"svg\", not both");
+      if (j.contains("svg")) {
+        o.svg = stringField(j, "svg", where);
+        if (o.svg.empty()) throw InvalidInput(where.key("svg").str() + ": an empty file name");
+      } else {
+        if (!j.contains("png")) throw InvalidInput(where.str() + ": missing \"png\" (the PNG file to write) or \"svg\"");
+        o.png = stringField(j, "png", where);
+        if (o.png.empty()) throw InvalidInput(where.key("png").str() + ": an empty file name");
+      }
       if (j.contains("draw")) {
         const json& d = j["draw"];
         if (!d.is_array() || d.empty()) throw InvalidInput(where.key("draw").str() + ": expected a non-empty array of entity names");
@@ -512,7 +518,7 @@ std::string sceneReportHtml(const SceneFile& s, const SceneOutput& report, const
   for (const json& j : outs) {
     h += "<h2 id=\"" + escapeHtml(j["output"]) + "\">" + escapeHtml(j["output"]) + " (" + escapeHtml(j["kind"]) + ")</h2>\n";
     if (j["kind"] == "figure") {
-      const std::filesystem::path png = std::filesystem::absolute(j["png"].get<std::string>());
+      const std::filesystem::path png = std::filesystem::absolute(j[j.contains("svg") ? "svg" : "png"].get<std::string>());
       h += "<img src=\"" + escapeHtml(png.lexically_relative(folder).string()) + "\" width=\"" +
            json(j["width"]).dump() + "\">\n";
     }
@@ -541,8 +547,9 @@ std::string cuspidalOutputJson(const SceneOutput& o, const CuspidalRecord& c) {
 }
 
 std::string figureOutputJson(const SceneOutput& o, const std::vector<std::string>& drawn, double seconds) {
-  json j = doubleOutputHead(o, "OSMesa", seconds, 0, true);
-  j["png"] = o.png.string();
+  json j = doubleOutputHead(o, o.svg.empty() ? "OSMesa" : "SVG", seconds, 0, true);
+  if (o.svg.empty()) j["png"] = o.png.string();
+  else j["svg"] = o.svg.string();
   j["width"] = o.width;
   j["height"] = o.height;
   j["drawn"] = drawn;
@@ -637,9 +644,18 @@ SceneFile parseScene(const std::string& text, const std::string& origin, const s
     if (!o.mechanism.empty()) checkReference(s, o, "mechanism", o.mechanism, SceneEntityKind::PlanarMechanism);
     for (std::size_t i = 0; i < o.screws.size(); ++i)
       checkReference(s, o, "screws[" + std::to_string(i) + "]", o.screws[i], SceneEntityKind::Screw);
-    for (std::size_t i = 0; i < o.draw.size(); ++i)
-      if (!s.entity(o.draw[i]))
-        throw InvalidInput(o.where + ".draw[" + std::to_string(i) + "]: no entity named " + inQuotes(o.draw[i]));
+    for (std::size_t i = 0; i < o.draw.size(); ++i) {
+      const SceneEntity* e = s.entity(o.draw[i]);
+      if (!e) throw InvalidInput(o.where + ".draw[" + std::to_string(i) + "]: no entity named " + inQuotes(o.draw[i]));
+      if (!o.svg.empty() && e->kind != SceneEntityKind::PlanarMechanism)
+        throw InvalidInput(o.where + ".draw[" + std::to_string(i) + "]: an SVG figure is 2-D: " + inQuotes(o.draw[i]) + " is a " +
+                           std::string(sceneEntityKindName(e->kind)) + ", not a planar-mechanism");
+    }
+    if (!o.svg.empty() && o.draw.empty()) {
+      bool any = false;
+      for (const SceneEntity& e : s.entities) any = any || e.kind == SceneEntityKind::PlanarMechanism;
+      if (!any) throw InvalidInput(o.where + ".svg: an SVG figure is 2-D and the scene has no planar-mechanism to draw");
+    }
     for (std::size_t i = 0; i < o.needs.size(); ++i)
       if (!s.output(o.needs[i]))
         throw InvalidInput(o.where + ".needs[" + std::to_string(i) + "]: no output named " + inQuotes(o.needs[i]));

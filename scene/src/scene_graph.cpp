@@ -15,7 +15,9 @@
 #include "soma/geometry/screws/identification.hpp"
 #include "soma/geometry/serial/ik.hpp"
 #include "soma/io/scene_output.hpp"
+#include "soma/render/plot.hpp"
 #include "soma/render/renderer.hpp"
+#include "soma/render/svg.hpp"
 #include "soma/scene/tessellation.hpp"
 
 #include <algorithm>
@@ -276,6 +278,7 @@ template <class S> OutputResult SceneGraph::compute(const io::SceneOutput& o, co
         double worst = 0;
         for (const planar::BurmesterPair<double>& p : pairs) {
           rec.push_back({{p.centre(0), p.centre(1)}, {p.circle(0), p.circle(1)}, p.radius, p.residual});
+          r.pairs.push_back({p.centre(0), p.centre(1), p.circle(0), p.circle(1), p.radius});
           worst = std::max(worst, p.residual);
         }
         r.ok = withinSqrtEps(worst);
@@ -367,7 +370,104 @@ const OutputResult& SceneGraph::output(const io::SceneOutput& o, const std::stri
   });
 }
 
+OutputResult SceneGraph::figure2d(const io::SceneOutput& o, const std::string& reason) {
+  render::Plot plot;
+  plot.equalAspect = true;
+  plot.x.label = "x";
+  plot.y.label = "y";
+  plot.title = scene_.origin.empty() ? o.name : std::filesystem::path(scene_.origin).filename().string() + ": " + o.name;
+  std::vector<std::string> names;
+  std::size_t colour = 0;
+  auto circle = [](double cx, double cy, double r, std::vector<double>& xs, std::vector<double>& ys) {
+    for (int k = 0; k <= 120; ++k) {
+      xs.push_back(cx + r * std::cos(2 * pi<double>() * k / 120));
+      ys.push_back(cy + r * std::sin(2 * pi<double>() * k / 120));
+    }
+  };
+  for (const io::SceneEntity& e : scene_.entities) {
+    if (e.kind != io::SceneEntityKind::PlanarMechanism) continue;
+    if (!o.draw.empty() && std::find(o.draw.begin(), o.draw.end(), e.name) == o.draw.end()) continue;
+    names.push_back(e.name);
+    const io::PlanarScene& m = node<io::PlanarScene>("planar-mechanism:" + e.name + "[double]", reason,
+                                                     [&](const std::string&) { return io::scenePlanarMechanism(e); });
+    if (m.fourbar) {
+      // GF §5.3: the ground pivots, the crank at its angle, the circles the moving pivots keep to.
+      const io::PlanarFourBarInput& f = *m.fourbar;
+      const Vec2<double> c2 = f.c1 + f.crank * Vec2<double>(std::cos(f.crankAngle), std::sin(f.crankAngle));
+      plot.add(e.name + ": ground pivots", {f.c1(0), f.c4(0)}, {f.c1(1), f.c4(1)}, render::palette::black).markers = true;
+      plot.series.back().line = false;
+      plot.add(e.name + ": crank", {f.c1(0), c2(0)}, {f.c1(1), c2(1)}, render::palette::blue);
+      std::vector<double> xs, ys;
+      circle(f.c1(0), f.c1(1), f.crank, xs, ys);
+      plot.add("", xs, ys, render::palette::skyBlue).dashed = true;
+      xs.clear(), ys.clear();
+      circle(f.c4(0), f.c4(1), f.rocker, xs, ys);
+      plot.add("", xs, ys, render::palette::skyBlue).dashed = true;
+      continue;
+    }
+    // The positions: each frame's origin and its x axis (a tenth of the positions' extent).
+    std::vector<double> xs, ys;
+    double lo = 1e300, hi = -1e300;
+    for (const io::PlanarPosition& p : m.positions) {
+      xs.push_back(p.x), ys.push_back(p.y);
+      lo = std::min({lo, p.x, p.y}), hi = std::max({hi, p.x, p.y});
+    }
+    const double tick = std::max(0.1 * (hi - lo), 1e-3);
+    render::PlotSeries& pos = plot.add(e.name + ": positions", xs, ys, render::palette::black);
+    pos.markers = true;
+    pos.markerRadius = 6;
+    for (const io::PlanarPosition& p : m.positions)
+      plot.add("", {p.x, p.x + tick * std::cos(p.angle)}, {p.y, p.y + tick * std::sin(p.angle)}, render::palette::black);
+    // The Burmester pairs of the burmester outputs using it (GF §5.4): centre, circle, the circle
+    // point at each position.
+    for (const io::SceneOutput& u : scene_.outputs) {
+      if (u.kind != io::SceneOutputKind::Burmester || u.mechanism != e.name) continue;
+      const OutputResult& b = output(u, reason);
+      for (const OutputResult::Pair2d& q : b.pairs) {
+        const render::Color c = render::palette::cycle(colour++);
+        std::vector<double> cx, cy;
+        circle(q.cx, q.cy, q.radius, cx, cy);
+        plot.add("", cx, cy, c);
+        std::vector<double> px, py;
+        for (const io::PlanarPosition& p : m.positions) {
+          const Vec2<double> w = SE2<double>(p.angle, Vec2<double>(p.x, p.y)).act(Vec2<double>(q.px, q.py));
+          px.push_back(w(0)), py.push_back(w(1));
+        }
+        render::PlotSeries& s = plot.add("", px, py, c);
+        s.line = false;
+        s.markers = true;
+        render::PlotSeries& centre = plot.add("", {q.cx}, {q.cy}, c);
+        centre.line = false;
+        centre.markers = true;
+        centre.markerRadius = 9;
+      }
+    }
+  }
+  const bool svg = !o.svg.empty();
+  const std::filesystem::path file = svg ? o.svg : o.png;
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::filesystem::path partial = file.string() + "." + std::to_string(::getpid()) + ".partial";
+  try {
+    if (svg) render::renderPlotSvg(plot, partial, o.width, o.height);
+    else render::renderPlotPng(plot, partial, o.width, o.height);
+  } catch (const std::exception& x) {
+    std::error_code ec;
+    std::filesystem::remove(partial, ec);
+    throw InvalidInput(o.where + (svg ? ".svg" : ".png") + ": cannot write " + file.string() + " (" + x.what() + ")");
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  pending_.push_back({outputNodeId(o), partial, file});
+  OutputResult r;
+  r.name = o.name;
+  r.json = io::figureOutputJson(o, names, seconds);
+  return r;
+}
+
 OutputResult SceneGraph::figure(const io::SceneOutput& o, const std::string& reason) {
+  // 2-D when it asks for SVG or draws planar mechanisms only.
+  bool planar = !o.draw.empty();
+  for (const std::string& d : o.draw) planar = planar && scene_.entity(d)->kind == io::SceneEntityKind::PlanarMechanism;
+  if (planar || !o.svg.empty()) return figure2d(o, reason);
   auto drawn = [&](const std::string& name) {
     if (o.draw.empty()) return true;
     for (const std::string& d : o.draw)

@@ -48,6 +48,7 @@ const BadFile kBadFiles[] = {
     {"bad_dynamics_missing.json", "outputs.d: missing \"to\" (the joint values)"},
     {"bad_dynamics_steps.json", "outputs.d.steps: expected an integer in [1, 100000]"},
     {"bad_dynamics_gravity.json", "outputs.d.gravity: "},
+    {"bad_figure_png_svg.json", "outputs.f: give \"png\" or \"svg\", not both"},
 };
 
 const std::string kRobots = R"("arm": {"kind": "robot", "file": "studies/robots/puma560.json"},
@@ -93,6 +94,12 @@ TEST_CASE("scene file: references, kinds and cycles are checked before anything 
                     Contains("scene.json: outputs.solve.method: \"simplex\" is not one of auto"));
   CHECK_THROWS_WITH(scene(R"("f": {"kind": "figure", "png": "x.png", "draw": ["nobody"]})"),
                     "scene.json: outputs.f.draw[0]: no entity named \"nobody\"");
+  CHECK_THROWS_WITH(scene(R"("f": {"kind": "figure", "svg": "x.svg", "draw": ["goal"]})"),
+                    "scene.json: outputs.f.draw[0]: an SVG figure is 2-D: \"goal\" is a pose, not a planar-mechanism");
+  CHECK_THROWS_WITH(scene(R"("f": {"kind": "figure", "svg": "x.svg"})"),
+                    "scene.json: outputs.f.svg: an SVG figure is 2-D and the scene has no planar-mechanism to draw");
+  CHECK_THROWS_WITH(scene(R"("f": {"kind": "figure"})"),
+                    "scene.json: outputs.f: missing \"png\" (the PNG file to write) or \"svg\"");
   CHECK_THROWS_WITH(scene(R"("f": {"kind": "figure", "png": "x.png", "size": [10, 10]})"),
                     "scene.json: outputs.f.size: expected [width, height], integers in [16, 8192]");
   CHECK_THROWS_WITH(scene(R"("b": {"kind": "burmester", "mechanism": "m"})",

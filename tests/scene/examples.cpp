@@ -481,4 +481,31 @@ TEST_CASE("example scene line_geometry: the regulus lies on x²+y²−z²=1; the
   CHECK(all["figure"]["drawn"].size() == 4);
 }
 
+TEST_CASE("example scene burmester_svg: the SVG shows each pair's circle point at the five positions on its circle", "[scene][examples]") {
+  const json all = runScene("burmester_svg.json");
+  const json& out = all["pairs"];
+  CHECK((out["count"].get<int>() + out["complex_count"].get<int>()) == 4);
+  const json& pos = fileJson("examples/scenes/burmester_svg.json")["entities"]["task"]["positions"];
+  for (const auto& p : out["pairs"]) {
+    const Eigen::Vector2d m(p["circle_point"][0].get<double>(), p["circle_point"][1].get<double>());
+    const Eigen::Vector2d c(p["centre"][0].get<double>(), p["centre"][1].get<double>());
+    for (const auto& q : pos) {
+      const Eigen::Vector2d at = Eigen::Rotation2Dd(double(q["angle"])) * m + Eigen::Vector2d(q["x"], q["y"]);
+      CHECK((at - c).norm() == Approx(p["radius"].get<double>()).epsilon(1e-8));
+    }
+  }
+  const json& fig = all["drawing"];
+  CHECK(fig["svg"] == "burmester_svg.svg");
+  CHECK(fig["drawn"] == json::array({"linkage", "task"}));
+  std::ifstream in("burmester_svg.svg");
+  const std::string svg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  REQUIRE(svg.rfind("<?xml", 0) == 0);
+  CHECK(svg.find("</svg>") != std::string::npos);
+  // A marker per position, per pair its centre and the circle point at each position, the two
+  // ground pivots (the legend adds its own).
+  std::size_t circles = 0;
+  for (std::size_t k = svg.find("<circle"); k != std::string::npos; k = svg.find("<circle", k + 1)) ++circles;
+  CHECK(circles >= 5 + 6 * out["count"].get<std::size_t>() + 2);
+}
+
 }  // namespace SOMA_UNITY_ID

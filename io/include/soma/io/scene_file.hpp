@@ -40,6 +40,9 @@
 //               (every entity when "draw" is absent): robots at the postures of the ik/fk outputs
 //               that use them, platforms at their stewart postures, lines, screws, points, and
 //               the cylindroids of the cylindroid outputs whose screws are drawn;
+//               {"svg": FILE, "draw": [MECHANISM...]} (or a "png" drawing only planar mechanisms) is
+//               a 2-D figure: the positions or 4-bar pivots of each planar mechanism and the Burmester
+//               pairs of the burmester outputs using it (every planar mechanism when "draw" is absent);
 //   report      {"html": FILE, "outputs": [OUTPUT...]}           an HTML page of those outputs (every
 //               other output when absent), their figures shown; "outputs" count as "needs".
 // Relative "file" paths resolve against the scene file's folder. Everything is validated before
@@ -104,6 +107,7 @@ struct SceneOutput {
   int bits = 256;                     ///< mpfr precision
   std::string joints;                 ///< fk: the joint values (JSON text, read only by io)
   std::filesystem::path png;          ///< figure: the PNG to write (relative: to the working folder)
+  std::filesystem::path svg;          ///< figure: the SVG to write instead (2-D figures: planar mechanisms)
   std::filesystem::path html;         ///< report: the HTML page to write (relative: to the working folder)
   std::vector<std::string> reported;  ///< report: the outputs shown (also in needs)
   std::vector<std::string> draw;      ///< figure: the entities drawn (empty: every entity)

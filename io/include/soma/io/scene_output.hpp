@@ -80,7 +80,7 @@ std::string reportOutputJson(const SceneOutput& o, double seconds);
 /// ok) and a section per output with its JSON (`outputJson`, in the report's order) and, for a
 /// figure, its PNG (linked relative to the page's folder).
 std::string sceneReportHtml(const SceneFile& s, const SceneOutput& report, const std::vector<std::string>& outputJson);
-/// figure: "png", "width", "height", "drawn" (the entities drawn), "seconds" (the render).
+/// figure: "png" (or "svg"), "width", "height", "drawn" (the entities drawn), "seconds" (the render).
 std::string figureOutputJson(const SceneOutput& o, const std::vector<std::string>& drawn, double seconds);
 
 #define SOMA_SCENE_OUTPUT_EXTERN(S)                                                                          \
