@@ -35,7 +35,7 @@ template <class S> int fkImpl(const std::filesystem::path& file, const std::stri
     nlohmann::json jq = nlohmann::json::array();  // echoed as given (degrees stay exact: no round trip through radians)
     for (const S& v : io::parseJointValues<S>(joints, rf)) jq.push_back(io::jsonNumber(v));
     j["joints"] = jq;
-    j["scalar"] = std::string(scalarName<S>());
+    io::addScalar<S>(j);
     j["seconds"] = secs;
     j["pose"] = io::poseJson(T);
     j["singularity"] = {{"manipulability", io::jsonNumber(sm.manipulability)},

@@ -46,7 +46,7 @@ int ikImpl(const std::filesystem::path& file, const std::string& tip, const std:
     j["pose"] = io::poseJson(target);
     j["angles"] = rf.degrees ? "degrees" : "radians";
     j["method"] = sol.method;
-    j["scalar"] = std::string(scalarName<S>());
+    io::addScalar<S>(j);
     if (escalated) j["escalated_to"] = sol.solved_in;
     j["seconds"] = sol.seconds;
     j["expected_count"] = sol.expected_count;

@@ -52,7 +52,6 @@ template <class S> int run(const std::filesystem::path& file, bool asJson, std::
   const Vec4<S> qv(q.w(), q.x(), q.y(), q.z());
   if (asJson) {
     json j = {{"input", file.string()},
-              {"scalar", std::string(scalarName<S>())},
               {"seconds", secs},
               {"matrix", io::jsonNumbers(m)},
               {"quaternion_wxyz", io::jsonNumbers(qv)},
@@ -78,6 +77,7 @@ template <class S> int run(const std::filesystem::path& file, bool asJson, std::
                 {"screw", io::jsonNumber(eScrew)}}},
               {"tolerance", io::jsonNumber(tol)},
               {"passed", ok}};
+    io::addScalar<S>(j);
     out << j.dump(2) << "\n";
     return ok ? 0 : 1;
   }
@@ -90,15 +90,15 @@ template <class S> int run(const std::filesystem::path& file, bool asJson, std::
       << "                  a = " << toText(h.coeffs().template head<4>()) << "\n"
       << "                  c = " << toText(h.coeffs().template tail<4>()) << "\n";
   out << "  Study params    " << toText(sp.coeffs()) << "\n"
-      << "                  a·c = " << toString(sp.studyCondition())
+      << "                  a·c = " << io::numberText(sp.studyCondition())
       << ", |a·c|/(|a||c|) = " << toString(sp.studyDefect(), 3) << "  (Study quadric)\n";
   out << "  twist log       (ω; v) = " << toText(xi.coeffs()) << "\n";
   if (sc.pureTranslation)
-    out << "  screw           pure translation " << toString(sc.translationDistance)
+    out << "  screw           pure translation " << io::numberText(sc.translationDistance)
         << " along " << toText(sc.translationDirection) << "\n";
   else
-    out << "  screw           θ = " << toString(sc.theta) << " about " << toText(sc.axis)
-        << " through " << toText(sc.point) << ", pitch " << toString(sc.pitch)
+    out << "  screw           θ = " << io::numberText(sc.theta) << " about " << toText(sc.axis)
+        << " through " << toText(sc.point) << ", pitch " << io::numberText(sc.pitch)
         << " per radian  (GF §2.5.2)\n";
   out << fmt::format(
       "  round trips     exp(log) {:.3g}, dual quaternion {:.3g}, Study {:.3g}, screw {:.3g}"

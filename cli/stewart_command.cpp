@@ -50,7 +50,7 @@ int stewartImpl(const std::filesystem::path& file, StewartMethod method, bool js
     for (const auto& l : P.legs) L.push_back(io::jsonNumber(l));
     j["leg_lengths"] = L;
     j["method"] = sol.method;
-    j["scalar"] = std::string(scalarName<S>());
+    io::addScalar<S>(j);
     j["seconds"] = sol.seconds;
     j["expected_count"] = sol.expected_count;
     if (!numeric) j["complex_count"] = sol.complexCount();

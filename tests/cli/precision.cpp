@@ -102,6 +102,7 @@ TEMPLATE_TEST_CASE("soma fk --json: the pose in the working scalar's digits", "[
   REQUIRE(rc == 0);
   const json j = json::parse(out);
   CHECK(j.at("scalar") == std::string(scalarName<S>()));
+  if constexpr (std::is_same_v<S, mpreal>) CHECK(j.at("bits") == 256);  // the precision to read it back in
   int longest = 0;
   const Mat4<S> got = jsonPose<S>(j.at("pose"), longest);
   // The joints echoed, read back exactly (decimal strings: 81.25 is 81.25 in S).

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <type_traits>
 
 namespace soma::io {
 
@@ -40,7 +41,15 @@ template <class D> nlohmann::json jsonNumbers(const Eigen::MatrixBase<D>& m) {
   return rows;
 }
 
-/// A number written by jsonNumber, read back exactly in S: a JSON number, a decimal string (read
+/// The working scalar of an answer, for its JSON: "scalar" (its command-line name) and, for mpfr,
+/// "bits" (the precision its numbers were written in, and must be read back in).
+template <class S> void addScalar(nlohmann::json& j) {
+  j["scalar"] = std::string(scalarName<S>());
+  if constexpr (std::is_same_v<S, mpreal>) j["bits"] = mpfrBits();
+}
+
+/// A number written by jsonNumber, read back exactly in S (for mpfr at the precision it was
+/// written in: setMpfrBits(bits) first): a JSON number, a decimal string (read
 /// correctly rounded in S; a subnormal value is kept, it is what S computed), or "inf", "-inf",
 /// "nan". InvalidInput naming `where` for anything else or a decimal S cannot hold (it overflows).
 /// The readers of input files (number.hpp) refuse NaN, infinity and subnormals; this one reads
