@@ -4,6 +4,7 @@
 #include "command.hpp"
 
 #include "soma/algebra/errors.hpp"
+#include "soma/io/json_number.hpp"
 #include "soma/io/scene_file.hpp"
 #include "soma/scene/scene_graph.hpp"
 
@@ -15,6 +16,16 @@ namespace soma::cli {
 
 namespace {
 
+// A number of an output's JSON in text: a wider scalar's decimal string as written (its own digits,
+// io/json_number.hpp), a JSON number with `digits` significant digits.
+std::string numberText(const nlohmann::json& x, int digits) {
+  if (x.is_string()) return x.get<std::string>();
+  return fmt::format("{:.{}g}", x.get<double>(), digits);
+}
+
+// A residual or error measure: a few digits are enough, in whatever scalar it was written.
+double measure(const nlohmann::json& x) { return io::readJsonNumber<double>(x, "scene output"); }
+
 // One line per output, from its JSON (io/scene_output.hpp).
 std::string summary(const nlohmann::json& j) {
   const std::string kind = j["kind"];
@@ -24,10 +35,10 @@ std::string summary(const nlohmann::json& j) {
     s += fmt::format("   {} found, {} expected in general", j["count"].get<int>(), j["expected_count"].get<int>());
   if (kind == "fk") {
     const auto& t = j["pose"]["translation"];
-    s += fmt::format("   translation {:.9g} {:.9g} {:.9g}", t[0].get<double>(), t[1].get<double>(), t[2].get<double>());
+    s += fmt::format("   translation {} {} {}", numberText(t[0], 9), numberText(t[1], 9), numberText(t[2], 9));
   }
   if (kind == "cylindroid")
-    s += fmt::format("   pitches {:.12g} {:.12g}", j["pitches"][0].get<double>(), j["pitches"][1].get<double>());
+    s += fmt::format("   pitches {} {}", numberText(j["pitches"][0], 12), numberText(j["pitches"][1], 12));
   if (kind == "workspace")
     s += fmt::format("   {} cells reached, rho_max {:.6g}, {} boundary curves", j["reached_cells"].get<int>(),
                      j["rho_max"].get<double>(), j["boundary_curves"].get<int>());
@@ -36,7 +47,7 @@ std::string summary(const nlohmann::json& j) {
     for (const auto& t : j["max_abs_torque"]) m += fmt::format(" {:.6g}", t.get<double>());
     s += fmt::format("   {} samples, max |torque|{}", j["times"].size(), m);
   }
-  s += fmt::format("   residual {:.3g}   {:.3g} s{}", j["residual"].get<double>(), j["seconds"].get<double>(),
+  s += fmt::format("   residual {:.3g}   {:.3g} s{}", measure(j["residual"]), j["seconds"].get<double>(),
                    j["ok"].get<bool>() ? "" : "   CHECK FAILED");
   return s;
 }

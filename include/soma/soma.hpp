@@ -115,6 +115,7 @@
 // io
 #include <soma/io/input_limits.hpp>
 #include <soma/io/json_file.hpp>
+#include <soma/io/json_number.hpp>
 #include <soma/io/link_inertia_file.hpp>
 #include <soma/io/number.hpp>
 #include <soma/io/planar_scene_file.hpp>

@@ -2,6 +2,9 @@
 // Definitions of scene_output.hpp's templates, instantiated for the five scalars by soma_instantiate (io/CMakeLists.txt).
 #include "soma/io/scene_output.hpp"
 
+#include "soma/io/json_number.hpp"
+#include "soma/io/pose_file.hpp"
+
 #include <nlohmann/json.hpp>
 
 namespace soma::io {
@@ -17,30 +20,17 @@ template <class S> nlohmann::json outputHead(const SceneOutput& o, const std::st
   j["scalar"] = std::string(scalarName<S>());
   if constexpr (std::is_same_v<S, mpreal>) j["bits"] = o.bits;
   j["seconds"] = seconds;
-  j["residual"] = toDouble(residual);
+  j["residual"] = jsonNumber(residual);
   j["ok"] = ok;
   return j;
 }
 
-template <class S> nlohmann::json poseJsonOf(const SE3<S>& g) {
-  const Mat3<S> R = g.rotation();
-  const Vec3<S> t = g.translation();
-  nlohmann::json rot = nlohmann::json::array();
-  for (int r = 0; r < 3; ++r) rot.push_back({toDouble(R(r, 0)), toDouble(R(r, 1)), toDouble(R(r, 2))});
-  return {{"rotation", rot}, {"translation", {toDouble(t(0)), toDouble(t(1)), toDouble(t(2))}}};
-}
-
-template <class S, int N> nlohmann::json vectorJson(const Eigen::Matrix<S, N, 1>& v) {
-  nlohmann::json a = nlohmann::json::array();
-  for (int i = 0; i < v.size(); ++i) a.push_back(toDouble(v(i)));
-  return a;
-}
-
+// Joint values in the robot file's unit (degrees when the file gives degrees), in S's digits.
 template <class S> nlohmann::json jointsJson(const RobotFile<S>& rf, const JointVector<S>& q) {
-  const double unit = rf.degrees ? 180.0 / pi<double>() : 1.0;
+  const S unit = rf.degrees ? S(180) / pi<S>() : S(1);
   nlohmann::json a = nlohmann::json::array();
   for (int i = 0; i < q.size(); ++i)
-    a.push_back(toDouble(q(i)) * (rf.robot.joints()[std::size_t(i)].type == JointType::Revolute ? unit : 1.0));
+    a.push_back(jsonNumber(S(q(i) * (rf.robot.joints()[std::size_t(i)].type == JointType::Revolute ? unit : S(1)))));
   return a;
 }
 
@@ -59,7 +49,7 @@ std::string ikOutputJson(const SceneOutput& o, const RobotFile<S>& rf, const IkS
   j["notes"] = sol.notes;
   nlohmann::json arr = nlohmann::json::array();
   for (std::size_t k = 0; k < sol.count(); ++k)
-    arr.push_back({{"joints", jointsJson(rf, sol.postures[k])}, {"residual", toDouble(sol.residuals[k])}});
+    arr.push_back({{"joints", jointsJson(rf, sol.postures[k])}, {"residual", jsonNumber(sol.residuals[k])}});
   j["solutions"] = arr;
   return j.dump();
 }
@@ -71,7 +61,7 @@ std::string fkOutputJson(const SceneOutput& o, const RobotFile<S>& rf, const Joi
   j["robot"] = o.robot;
   j["angles"] = rf.degrees ? "degrees" : "radians";
   j["joints"] = jointsJson(rf, q);
-  j["pose"] = poseJsonOf(pose);
+  j["pose"] = poseJson(pose);
   return j.dump();
 }
 
@@ -88,8 +78,8 @@ template <class S> std::string stewartOutputJson(const SceneOutput& o, const Ste
   j["notes"] = sol.notes;
   nlohmann::json arr = nlohmann::json::array();
   for (std::size_t k = 0; k < sol.count(); ++k) {
-    nlohmann::json p = poseJsonOf(sol.postures[k]);
-    p["residual"] = toDouble(sol.residuals[k]);
+    nlohmann::json p = poseJson(sol.postures[k]);
+    p["residual"] = jsonNumber(sol.residuals[k]);
     arr.push_back(p);
   }
   j["solutions"] = arr;
@@ -101,11 +91,11 @@ std::string cylindroidOutputJson(const SceneOutput& o, const Cylindroid<S>& c, c
                                  bool ok) {
   nlohmann::json j = outputHead<S>(o, "principal form", seconds, residual, ok);
   j["screws"] = o.screws;
-  j["pitches"] = {toDouble(c.pitchMax()), toDouble(c.pitchMin())};
-  j["principal_screws"] = {vectorJson<S, 6>(c.principal(1)), vectorJson<S, 6>(c.principal(2))};
-  j["centre"] = vectorJson<S, 3>(c.centre());
+  j["pitches"] = nlohmann::json::array({jsonNumber(c.pitchMax()), jsonNumber(c.pitchMin())});
+  j["principal_screws"] = {jsonNumbers(c.principal(1)), jsonNumbers(c.principal(2))};
+  j["centre"] = jsonNumbers(c.centre());
   nlohmann::json f = nlohmann::json::array();
-  for (int r = 0; r < 3; ++r) f.push_back({toDouble(c.frame()(r, 0)), toDouble(c.frame()(r, 1)), toDouble(c.frame()(r, 2))});
+  for (int r = 0; r < 3; ++r) f.push_back({jsonNumber(c.frame()(r, 0)), jsonNumber(c.frame()(r, 1)), jsonNumber(c.frame()(r, 2))});
   j["frame"] = f;
   return j.dump();
 }
@@ -119,11 +109,11 @@ std::string screwSystemOutputJson(const SceneOutput& o, const ScrewSystemIdentif
   j["dimension"] = id.dimension;
   j["via_reciprocal"] = id.viaReciprocal;
   nlohmann::json p = nlohmann::json::array();
-  for (int i = 0; i < id.parameterCount; ++i) p.push_back(toDouble(id.parameters[std::size_t(i)]));
+  for (int i = 0; i < id.parameterCount; ++i) p.push_back(jsonNumber(id.parameters[std::size_t(i)]));
   j["parameters"] = p;
-  j["frame"] = poseJsonOf(id.frame);
+  j["frame"] = poseJson(id.frame);
   j["nearest_other_type"] = screwSystemTypeName(id.nearestOtherType);
-  j["boundary_distance"] = toDouble(id.boundaryDistance);
+  j["boundary_distance"] = jsonNumber(id.boundaryDistance);
   return j.dump();
 }
 

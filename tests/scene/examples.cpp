@@ -2,6 +2,7 @@
 // independently of soma's solvers: forward kinematics by the DH / MDH / POE products written out,
 // the postures a pose was made from, leg lengths |R q_i + t − p_i|, a cylindroid's pitches by
 // brute-force extremes of the pencil's pitch, the counts the book gives.
+#include "soma/io/json_number.hpp"
 #include "soma/io/scene_file.hpp"
 #include "soma/geometry/screws/identification.hpp"
 #include "soma/scene/scene_graph.hpp"
@@ -32,6 +33,10 @@ json runScene(const std::string& name) {
   CHECK(r.ok());
   return all;
 }
+
+// A number of a scene's JSON output: a JSON number (float, double) or the decimal string a wider
+// scalar is written as (io/json_number.hpp), read in double for the comparisons here.
+double num(const json& j) { return io::readJsonNumber<double>(j, "scene output"); }
 
 json fileJson(const std::string& rel) {
   std::ifstream in(repoFile(rel));
@@ -72,15 +77,15 @@ M4 tableFk(const json& robot, const std::vector<double>& q) {
 M4 poseOf(const json& p) {
   M4 T = M4::Identity();
   for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) T(r, c) = p["rotation"][r][c];
-    T(r, 3) = p["translation"][r];
+    for (int c = 0; c < 3; ++c) T(r, c) = num(p["rotation"][r][c]);
+    T(r, 3) = num(p["translation"][r]);
   }
   return T;
 }
 
 std::vector<double> jointsIn(const json& solution, bool degrees) {
   std::vector<double> q;
-  for (const auto& v : solution["joints"]) q.push_back(double(v) * (degrees ? M_PI / 180 : 1.0));
+  for (const auto& v : solution["joints"]) q.push_back(num(v) * (degrees ? M_PI / 180 : 1.0));
   return q;
 }
 
@@ -197,7 +202,14 @@ TEST_CASE("example scene puma_mpfr: the same postures in mpfr and double, each b
   CHECK(all["postures_mpfr"]["count"] == 8);
   CHECK(all["postures_mpfr"]["bits"] == 160);
   CHECK(checkPostures(all["postures_mpfr"], dh, goal, {}, 1e-12) == 0);
-  CHECK(all["postures_mpfr"]["residual"].get<double>() <= 1e-40);
+  CHECK(num(all["postures_mpfr"]["residual"]) <= 1e-40);
+  // Written in the output's own digits (io/json_number.hpp): floor(160 log10 2) + 2 = 50 significant
+  // digits, not a double's 17.
+  const json& q0 = all["postures_mpfr"]["solutions"][0]["joints"][0];
+  REQUIRE(q0.is_string());
+  std::size_t digits = 0;
+  for (const char c : q0.get<std::string>().substr(0, q0.get<std::string>().find_first_of("eE"))) digits += c >= '0' && c <= '9';
+  CHECK(digits >= 49);
 }
 
 TEST_CASE("example scene puma_mdh: modified DH postures by the MDH product, the pose's joints among them", "[scene][examples]") {
@@ -247,16 +259,16 @@ TEST_CASE("example scene cylindroid_two_screws: the pitches are the pencil's pit
   const json all = runScene("cylindroid_two_screws.json");
   const auto [hMax, hMin] = pencilPitchExtremes(screwOf({0, 0, 0}, {1, 0, 0}, 0.2), screwOf({0, 0, 0.5}, {1, 1, 0}, -0.1));
   for (const char* o : {"pencil", "pencil_mpfr"}) {
-    CHECK(all[o]["pitches"][0].get<double>() == Approx(hMax).margin(1e-9));
-    CHECK(all[o]["pitches"][1].get<double>() == Approx(hMin).margin(1e-9));
+    CHECK(num(all[o]["pitches"][0]) == Approx(hMax).margin(1e-9));
+    CHECK(num(all[o]["pitches"][1]) == Approx(hMin).margin(1e-9));
   }
 }
 
 TEST_CASE("example scene cylindroid_perpendicular: perpendicular meeting screws are the principal ones", "[scene][examples]") {
   const json out = runScene("cylindroid_perpendicular.json")["pencil"];
-  CHECK(out["pitches"][0].get<double>() == Approx(0.3).margin(1e-15));
-  CHECK(out["pitches"][1].get<double>() == Approx(-0.2).margin(1e-15));
-  for (int k = 0; k < 3; ++k) CHECK(std::abs(out["centre"][k].get<double>()) <= 1e-15);
+  CHECK(num(out["pitches"][0]) == Approx(0.3).margin(1e-15));
+  CHECK(num(out["pitches"][1]) == Approx(-0.2).margin(1e-15));
+  for (int k = 0; k < 3; ++k) CHECK(std::abs(num(out["centre"][k])) <= 1e-15);
 }
 
 TEST_CASE("example scene cylindroid_lines: the cylindroid of two lines", "[scene][examples]") {
@@ -265,14 +277,14 @@ TEST_CASE("example scene cylindroid_lines: the cylindroid of two lines", "[scene
   a << 1, 0, 0, 0, 0, 0;
   b = screwOf({0, 0, 0.4}, {0.5, std::sqrt(3.0) / 2, 0}, 0);
   const auto [hMax, hMin] = pencilPitchExtremes(a, b);
-  CHECK(out["pitches"][0].get<double>() == Approx(hMax).margin(1e-9));
-  CHECK(out["pitches"][1].get<double>() == Approx(hMin).margin(1e-9));
+  CHECK(num(out["pitches"][0]) == Approx(hMax).margin(1e-9));
+  CHECK(num(out["pitches"][1]) == Approx(hMin).margin(1e-9));
   // Two lines at angle α (cos α = ½) with reciprocal product ω₁·v₂ + ω₂·v₁ = 2k: the pitch h of
   // μ l₁ + λ l₂ solves det(K − h G) = 0, K = [[0, k], [k, 0]], G = [[1, c], [c, 1]]:
   // h = k / (1 + c) and h = −k / (1 − c).
   const double k = (a.head<3>().dot(b.tail<3>()) + b.head<3>().dot(a.tail<3>())) / 2, c = 0.5;
-  CHECK(out["pitches"][0].get<double>() == Approx(-k / (1 - c)).margin(1e-12));
-  CHECK(out["pitches"][1].get<double>() == Approx(k / (1 + c)).margin(1e-12));
+  CHECK(num(out["pitches"][0]) == Approx(-k / (1 - c)).margin(1e-12));
+  CHECK(num(out["pitches"][1]) == Approx(k / (1 + c)).margin(1e-12));
 }
 
 TEST_CASE("example scene arm3r_fk: the finger arm's tool position, GF §5.2.2", "[scene][examples]") {
@@ -283,7 +295,7 @@ TEST_CASE("example scene arm3r_fk: the finger arm's tool position, GF §5.2.2", 
                             Eigen::Vector3d(0, 0.8 + 1.1 * std::cos(q2) + 0.6 * std::cos(q2 + q3),
                                             1.1 * std::sin(q2) + 0.6 * std::sin(q2 + q3));
   for (const char* o : {"tool", "tool_mpfr"})
-    for (int k = 0; k < 3; ++k) CHECK(all[o]["pose"]["translation"][k].get<double>() == Approx(p(k)).margin(1e-14));
+    for (int k = 0; k < 3; ++k) CHECK(num(all[o]["pose"]["translation"][k]) == Approx(p(k)).margin(1e-14));
 }
 
 }  // namespace SOMA_UNITY_ID
@@ -298,9 +310,9 @@ TEST_CASE("example scene screw_system_ia1: a moved IA1 normal form is identified
     CHECK(all[o]["type_name"] == soma::screwSystemTypeName(soma::ScrewSystemType::IA1_3));
     // Built from (e_i; p_i e_i) with p = 0.3, 0.1, −0.2: the principal pitches are invariants.
     REQUIRE(all[o]["parameters"].size() == 3);
-    CHECK(all[o]["parameters"][0].get<double>() == Approx(0.3).margin(1e-12));
-    CHECK(all[o]["parameters"][1].get<double>() == Approx(0.1).margin(1e-12));
-    CHECK(all[o]["parameters"][2].get<double>() == Approx(-0.2).margin(1e-12));
+    CHECK(num(all[o]["parameters"][0]) == Approx(0.3).margin(1e-12));
+    CHECK(num(all[o]["parameters"][1]) == Approx(0.1).margin(1e-12));
+    CHECK(num(all[o]["parameters"][2]) == Approx(-0.2).margin(1e-12));
   }
 }
 
@@ -317,7 +329,7 @@ TEST_CASE("example scene cuspidal_3r_witness: 4 cusps; the witness's two posture
   const json robot = fileJson("studies/robots/cusp3r_orthogonal_wenger.json");
   std::vector<double> start, goal;
   for (int i = 0; i < 3; ++i) start.push_back(w["start"][i]), goal.push_back(w["goal"][i]);
-  const Eigen::Vector3d target(w["target"][0].get<double>(), w["target"][1].get<double>(), w["target"][2].get<double>());
+  const Eigen::Vector3d target(num(w["target"][0]), num(w["target"][1]), num(w["target"][2]));
   // Both ends reach the target by the DH product; they are two different postures.
   CHECK((tableFk(robot, start).block<3, 1>(0, 3) - target).norm() <= 1e-6);
   CHECK((tableFk(robot, goal).block<3, 1>(0, 3) - target).norm() <= 1e-6);
@@ -337,12 +349,12 @@ TEST_CASE("example scene burmester_five_positions: each circle point's 5 positio
   CHECK(out["count"].get<int>() % 2 == 0);
   const json& pos = fileJson("examples/scenes/burmester_five_positions.json")["entities"]["task"]["positions"];
   for (const auto& p : out["pairs"]) {
-    const Eigen::Vector2d m(p["circle_point"][0].get<double>(), p["circle_point"][1].get<double>());
-    const Eigen::Vector2d c(p["centre"][0].get<double>(), p["centre"][1].get<double>());
+    const Eigen::Vector2d m(num(p["circle_point"][0]), num(p["circle_point"][1]));
+    const Eigen::Vector2d c(num(p["centre"][0]), num(p["centre"][1]));
     for (const auto& q : pos) {
       // The circle point moved by position q: R(angle) m + (x, y).
       const Eigen::Vector2d at = Eigen::Rotation2Dd(double(q["angle"]) * M_PI / 180) * m + Eigen::Vector2d(q["x"], q["y"]);
-      CHECK((at - c).norm() == Approx(p["radius"].get<double>()).epsilon(1e-8));
+      CHECK((at - c).norm() == Approx(num(p["radius"])).epsilon(1e-8));
     }
   }
 }
@@ -419,10 +431,10 @@ TEST_CASE("example scene workspace_3r: the map's extent is the arm's reach by br
   // rho_max is the sampled extent plus a 2% pad (workspace.hpp): within [0.99 rmax, rmax + pad].
   // The grid misses the true extremes by at most (link lengths 4.5) × h²/2 ≈ 6e-4: slack 2e-3.
   const double pad = 0.02 * std::max(rmax, zmax - zmin), slack = 2e-3;
-  CHECK(out["rho_max"].get<double>() >= 0.99 * rmax);
-  CHECK(out["rho_max"].get<double>() <= rmax + pad + slack);
-  CHECK(out["z_max"].get<double>() <= zmax + pad + slack);
-  CHECK(out["z_min"].get<double>() >= zmin - pad - slack);
+  CHECK(num(out["rho_max"]) >= 0.99 * rmax);
+  CHECK(num(out["rho_max"]) <= rmax + pad + slack);
+  CHECK(num(out["z_max"]) <= zmax + pad + slack);
+  CHECK(num(out["z_min"]) >= zmin - pad - slack);
   CHECK(out["samples"] == 40000);
   CHECK(out["reached_cells"].get<int>() > 0);
   CHECK(out["boundary_curves"].get<int>() > 0);  // a 3R arm: the singular curves' images
@@ -443,15 +455,15 @@ TEST_CASE("example scene dynamics_puma_payload: at rest the torques hold the arm
     const std::vector<double> t0 = holdingTorques(robot, from, 9.81, m, {0, 0, 0.05});
     const std::vector<double> t1 = holdingTorques(robot, to, 9.81, m, {0, 0, 0.05});
     for (std::size_t i = 0; i < 6; ++i) {
-      CHECK(out["torques"][0][i].get<double>() == Approx(t0[i]).margin(1e-9));
-      CHECK(out["torques"][20][i].get<double>() == Approx(t1[i]).margin(1e-9));
+      CHECK(num(out["torques"][0][i]) == Approx(t0[i]).margin(1e-9));
+      CHECK(num(out["torques"][20][i]) == Approx(t1[i]).margin(1e-9));
     }
-    CHECK(out["times"][20].get<double>() == 2.0);
-    CHECK(out["joints"][20][1].get<double>() == Approx(-60).margin(1e-12));
+    CHECK(num(out["times"][20]) == 2.0);
+    CHECK(num(out["joints"][20][1]) == Approx(-60).margin(1e-12));
   }
   CHECK_FALSE(all["unloaded"].contains("momenta_cl062"));
   REQUIRE(all["loaded"]["momenta_cl062"].size() == 6);
-  CHECK(all["loaded"]["momenta_cl062_residual"].get<double>() <= 1e-12);
+  CHECK(num(all["loaded"]["momenta_cl062_residual"]) <= 1e-12);
 }
 
 TEST_CASE("example scene line_geometry: the regulus lies on x²+y²−z²=1; the pencil's pitches by brute force", "[scene][examples]") {
@@ -469,8 +481,8 @@ TEST_CASE("example scene line_geometry: the regulus lies on x²+y²−z²=1; the
     }
   }
   const auto [hMax, hMin] = pencilPitchExtremes(screwOf({0, 0, 0}, {1, 0, 0}, 0.4), screwOf({0, 0, 0.3}, {1, 2, 0}, -0.1));
-  CHECK(all["pitches"]["pitches"][0].get<double>() == Approx(hMax).margin(1e-9));
-  CHECK(all["pitches"]["pitches"][1].get<double>() == Approx(hMin).margin(1e-9));
+  CHECK(num(all["pitches"]["pitches"][0]) == Approx(hMax).margin(1e-9));
+  CHECK(num(all["pitches"]["pitches"][1]) == Approx(hMin).margin(1e-9));
   CHECK(all["system"]["dimension"] == 2);
   // The complex (α; b) = (ẑ; 0.5 ẑ) holds the line through (1, 0, 0) along (0, 0.5, −1), by hand:
   // b·ω + α·v = (0,0,0.5)·(0,0.5,−1) + ẑ·((1,0,0) × (0,0.5,−1)) = −0.5 + 0.5 = 0; not the one along z.
@@ -487,11 +499,11 @@ TEST_CASE("example scene burmester_svg: the SVG shows each pair's circle point a
   CHECK((out["count"].get<int>() + out["complex_count"].get<int>()) == 4);
   const json& pos = fileJson("examples/scenes/burmester_svg.json")["entities"]["task"]["positions"];
   for (const auto& p : out["pairs"]) {
-    const Eigen::Vector2d m(p["circle_point"][0].get<double>(), p["circle_point"][1].get<double>());
-    const Eigen::Vector2d c(p["centre"][0].get<double>(), p["centre"][1].get<double>());
+    const Eigen::Vector2d m(num(p["circle_point"][0]), num(p["circle_point"][1]));
+    const Eigen::Vector2d c(num(p["centre"][0]), num(p["centre"][1]));
     for (const auto& q : pos) {
       const Eigen::Vector2d at = Eigen::Rotation2Dd(double(q["angle"])) * m + Eigen::Vector2d(q["x"], q["y"]);
-      CHECK((at - c).norm() == Approx(p["radius"].get<double>()).epsilon(1e-8));
+      CHECK((at - c).norm() == Approx(num(p["radius"])).epsilon(1e-8));
     }
   }
   const json& fig = all["drawing"];
