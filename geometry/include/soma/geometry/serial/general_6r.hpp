@@ -49,11 +49,19 @@ template <class S> struct General6RSolution : Solution<S> {
   double theta3_offset = 0;
   /// The smallest distance between two real candidates of x3 (relative): a cluster warning.
   double min_gap = 0;
+  /// The elimination used: "theta3 last" (the chain as given), or "thetaK last" with
+  /// ", reversed loop" when the leading matrix was singular for every θ3 offset and a cyclic
+  /// relabelling or the reversed loop of the closed chain was better conditioned.
+  std::string elimination;
 };
 
 struct General6ROptions {
   /// Re-solve in the next scalar of the ladder when the answer may be short.
   bool escalate = true;
+  /// Eliminate another joint last (a cyclic relabelling or the reversed loop) when the leading
+  /// matrix of the θ3-last elimination is singular for every offset; false keeps θ3 last (and
+  /// its generalized eigenproblem).
+  bool choose_elimination = true;
   /// Newton iterations of the polish (stops earlier at convergence).
   int polish_iterations = 12;
 };
