@@ -17,7 +17,10 @@
 // Conditioning: the coefficients are computed by exact interpolation on the grid {0, π/2, π}
 // (no symbolic expansion); lengths are scaled to unit size (angles do not change); θ3 is
 // rotated by an offset β (a Möbius change of the half-angle variable) when the leading matrix
-// A is singular — θ3 = β + π is then the root at infinity — and the whole solve is repeated in
+// A is singular — θ3 = β + π is then the root at infinity; when A is singular for every β
+// (structurally, e.g. a PUMA whose wrist axes nearly meet or a UR whose axis 4 is nearly parallel
+// to 2 and 3) the closed loop Rz(θ1)K1···Rz(θ6)K6 = I is relabelled cyclically or reversed so
+// that another joint is eliminated last, the best-conditioned of the 12 — and the whole solve is repeated in
 // the next scalar of the ladder (float → double → long double → float128 → mpfr) when the
 // eigenvalue count, a cluster of eigenvalues, an odd real count or a failed polish says the
 // answer may be short. Every such step is written into `notes`.
