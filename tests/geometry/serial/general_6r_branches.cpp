@@ -95,8 +95,9 @@ TEST_CASE("general 6R branches: three parallel axes 3-5, deflation not clean, fu
   CHECK(s.worstResidual() <= Tolerance<double>::identity(64));
 }
 
-TEST_CASE("general 6R branches: wrist axes 4-6 meeting, leading matrix singular for every offset (QZ)",
-          "[sixr][branches]") {
+/// A random robot whose wrist axes 4-6 meet (a Pieper robot, a degenerate case of the
+/// eigenproblem; its closed form is solvePieper).
+Robot6R<double> wristRobot() {
   auto& g = test::rng(74);
   Robot6R<double> rb = randomRobot6<double>(g);
   rb[3].a = 0;
@@ -104,7 +105,16 @@ TEST_CASE("general 6R branches: wrist axes 4-6 meeting, leading matrix singular 
   rb[4].d = 0;
   rb[3].alpha = pi<double>() / 2;
   rb[4].alpha = -pi<double>() / 2;
-  const auto s = solveGeneral6R(rb, general6rForward(rb, kQ));
+  return rb;
+}
+
+TEST_CASE("general 6R branches: wrist axes 4-6 meeting, θ3 kept last: leading matrix singular for every offset (QZ)",
+          "[sixr][branches]") {
+  const Robot6R<double> rb = wristRobot();
+  General6ROptions o;
+  o.choose_elimination = false;
+  const auto s = solveGeneral6R(rb, general6rForward(rb, kQ), o);
+  CHECK(s.elimination == "theta3 last");
   for (const auto& n : s.notes) INFO(n);
   CHECK(hasNote(s, "generalized eigenproblem (QZ)"));
   CHECK(hasNote(s, "re-solved in long-double"));
@@ -113,6 +123,23 @@ TEST_CASE("general 6R branches: wrist axes 4-6 meeting, leading matrix singular 
   // says it may be short — never fewer postures silently.
   CHECK(s.worstResidual() <= Tolerance<double>::identity(64));
   CHECK((nearest(s, kQ) <= 1e-9 || hasNote(s, "the answer above may be short")));
+}
+
+TEST_CASE("general 6R branches: wrist axes 4-6 meeting, another joint eliminated last",
+          "[sixr][branches]") {
+  // θ3 last is structurally singular here (the test above); a cyclic relabelling or the
+  // reversed loop is well conditioned and finds the generating posture in double.
+  const Robot6R<double> rb = wristRobot();
+  const auto s = solveGeneral6R(rb, general6rForward(rb, kQ));
+  for (const auto& n : s.notes) INFO(n);
+  INFO("elimination " << s.elimination);
+  CHECK(hasNote(s, "ill-conditioned for every θ3 offset"));
+  CHECK(s.elimination != "theta3 last");
+  CHECK_FALSE(hasNote(s, "generalized eigenproblem (QZ)"));
+  CHECK(s.leading_rcond > Tolerance<double>::precision(2));
+  CHECK(s.count() % 2 == 0);
+  CHECK(nearest(s, kQ) <= 1e-9);
+  CHECK(s.worstResidual() <= Tolerance<double>::identity(64));
 }
 
 TEST_CASE("general 6R branches: a planar robot (all α = 0) — no eigenvalues, and the answer says so",

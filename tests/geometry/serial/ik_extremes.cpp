@@ -211,16 +211,12 @@ TEST_CASE("IK extremes: PUMA elbow singularity (arm stretched) on both sides", "
   }
 }
 
-// SOLVER BUG (reported to the general-6R owner, 2026-11-30): a PUMA 560 whose wrist axes 5 and 6
-// miss by a5 = 1e-5, 1e-3 or 0.1 (classified general6r, since a5 > Tolerance::input()·L) gets odd
-// posture counts (1, 3, 5) and not the true posture: the leading matrix of the 12×12 pencil is
-// singular at every θ3 offset β (rcond 1e-17 in double, 1e-79 in mpfr — structural, not
-// rounding), and the escalation through long double, float128 and mpfr does not help. The
-// Raghavan–Roth split used (θ3 eliminated last) degenerates for this geometry (a1 = d2 = α2 =
-// a4 = d5 = 0); another split or the reversed chain would be needed. Below the threshold
-// (a5 ≤ 1e-7, Pieper) every case passes.
+// A PUMA 560 whose wrist axes 5 and 6 miss by a5 = ε (classified general6r above
+// Tolerance::input()·L): the θ3-last elimination's leading matrix is singular at every θ3 offset
+// (structural for a1 = d2 = α2 = a4 = d5 = 0), so the solver eliminates on the reversed chain
+// (general_6r_impl.hpp). Below the threshold the Pieper closed form is used.
 TEST_CASE("IK extremes: nearly intersecting wrist axes across the Pieper threshold",
-          "[serial][ik][extreme][axes][!mayfail]") {
+          "[serial][ik][extreme][axes]") {
   using S = double;
   auto& g = test::rng(812);
   // Wrist offset a5 = ε: axes 4-6 meet for ε = 0, miss by ε otherwise. Below the classification
@@ -238,11 +234,10 @@ TEST_CASE("IK extremes: nearly intersecting wrist axes across the Pieper thresho
   }
 }
 
-// SOLVER BUG (same as above): a UR-type arm with axis 4 tilted by α3 = 1e-3 or 0.1 off the
-// parallel axes 2-3 (classified general6r) gets odd counts (5, 7) and misses the true posture;
-// α3 ≤ 1e-7 (Pieper) and α3 = 1e-5 pass.
+// A UR-type arm with axis 4 tilted by α3 = ε off the parallel axes 2-3 (classified general6r
+// above the threshold): the same structural degeneracy, the same remedy.
 TEST_CASE("IK extremes: nearly parallel axes 2-4 across the Pieper threshold",
-          "[serial][ik][extreme][axes][!mayfail]") {
+          "[serial][ik][extreme][axes]") {
   using S = double;
   auto& g = test::rng(813);
   for (const double e : {0.0, 1e-12, 1e-9, 1e-7, 1e-5, 1e-3, 1e-1}) {

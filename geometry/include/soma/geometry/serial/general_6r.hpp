@@ -17,7 +17,10 @@
 // Conditioning: the coefficients are computed by exact interpolation on the grid {0, π/2, π}
 // (no symbolic expansion); lengths are scaled to unit size (angles do not change); θ3 is
 // rotated by an offset β (a Möbius change of the half-angle variable) when the leading matrix
-// A is singular — θ3 = β + π is then the root at infinity — and the whole solve is repeated in
+// A is singular — θ3 = β + π is then the root at infinity; when A is singular for every β
+// (structurally, e.g. a PUMA whose wrist axes nearly meet or a UR whose axis 4 is nearly parallel
+// to 2 and 3) the closed loop Rz(θ1)K1···Rz(θ6)K6 = I is relabelled cyclically or reversed so
+// that another joint is eliminated last, the best-conditioned of the 12 — and the whole solve is repeated in
 // the next scalar of the ladder (float → double → long double → float128 → mpfr) when the
 // eigenvalue count, a cluster of eigenvalues, an odd real count or a failed polish says the
 // answer may be short. Every such step is written into `notes`.
@@ -49,11 +52,19 @@ template <class S> struct General6RSolution : Solution<S> {
   double theta3_offset = 0;
   /// The smallest distance between two real candidates of x3 (relative): a cluster warning.
   double min_gap = 0;
+  /// The elimination used: "theta3 last" (the chain as given), or "thetaK last" with
+  /// ", reversed loop" when the leading matrix was singular for every θ3 offset and a cyclic
+  /// relabelling or the reversed loop of the closed chain was better conditioned.
+  std::string elimination;
 };
 
 struct General6ROptions {
   /// Re-solve in the next scalar of the ladder when the answer may be short.
   bool escalate = true;
+  /// Eliminate another joint last (a cyclic relabelling or the reversed loop) when the leading
+  /// matrix of the θ3-last elimination is singular for every offset; false keeps θ3 last (and
+  /// its generalized eigenproblem).
+  bool choose_elimination = true;
   /// Newton iterations of the polish (stops earlier at convergence).
   int polish_iterations = 12;
 };

@@ -369,9 +369,48 @@ bool deflateExtraneous(Work24<S>& H, const M12<S>& A, const M12<S>& B, const M12
   return true;
 }
 
+/// The closed loop Rz(φ1)·K1·Rz(φ2)·K2···Rz(φ6)·K6 = I of a 6R chain reaching T: K_i = G_i =
+/// Tz(d_i)·Tx(a_i)·Rx(α_i) for i < 6 and K6 = G6·T⁻¹ (each K: v ↦ R v + t).
+template <class S> struct Loop6R {
+  std::array<Mat3<S>, 6> R;
+  std::array<Vec3<S>, 6> t;
+};
+template <class S> Loop6R<S> loopOf(const Robot6R<S>& rb, const Mat3<S>& RT, const Vec3<S>& tT) {
+  Loop6R<S> K;
+  for (int i = 0; i < 6; ++i) {
+    const Link<S> k = linkOf(rb[i]);
+    K.R[i] << S(1), S(0), S(0), S(0), k.ca, -k.sa, S(0), k.sa, k.ca;
+    K.t[i] = Vec3<S>(k.a, S(0), k.d);
+  }
+  K.R[5] = (K.R[5] * RT.transpose()).eval();
+  K.t[5] = K.t[5] - K.R[5] * tT;
+  return K;
+}
+
+/// The same loop read from joint `shift` + 1 on (a cyclic relabelling), backwards when
+/// `reverse` (the inverse loop Rz(−φ6)·K5⁻¹···Rz(−φ1)·K6⁻¹ = I): each eliminates another joint
+/// last. Joint i' of the relabelled loop is joint jointOf(i') of the chain, its angle negated
+/// when reversed.
+template <class S> Loop6R<S> relabelled(const Loop6R<S>& K, int shift, bool reverse) {
+  Loop6R<S> C;
+  for (int i = 0; i < 6; ++i) {
+    C.R[i] = K.R[(i + shift) % 6];
+    C.t[i] = K.t[(i + shift) % 6];
+  }
+  if (!reverse) return C;
+  Loop6R<S> V;
+  for (int i = 0; i < 6; ++i) {
+    const int j = (10 - i) % 6;  // K'_i = K_{5−i}⁻¹ (0-based, K_{−1} = K_5)
+    V.R[i] = C.R[j].transpose();
+    V.t[i] = -(V.R[i] * C.t[j]);
+  }
+  return V;
+}
+inline int relabelledJoint(int i, int shift, bool reverse) { return ((reverse ? 5 - i : i) + shift) % 6; }
+
 // GF §11.5 (16 postures of the general 6R); Raghavan–Roth elimination, Manocha–Canny eigenproblem.
 template <class S>
-Core<S> eigenCore(const Robot6R<S>& rb, const Mat3<S>& RT, const Vec3<S>& tT) {
+Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
   using std::abs;
   using std::atan;
   using std::atan2;
@@ -379,23 +418,21 @@ Core<S> eigenCore(const Robot6R<S>& rb, const Mat3<S>& RT, const Vec3<S>& tT) {
   using std::sin;
   using std::sqrt;
   Core<S> out;
-  std::array<Link<S>, 6> L;
-  for (int i = 0; i < 6; ++i) L[i] = linkOf(rb[i]);
   const Vec3<S> ez(S(0), S(0), S(1));
 
   // Left side G2·Rz(θ3)·G3·Rz(θ4)·G4·Rz(θ5)·G5 applied to (origin, e_z), on the 3×3×3 grid.
   std::array<V14<S>, 27> F;
   {
-    const Vec3<S> p5(L[4].a, S(0), L[4].d), l5 = rx(L[4], ez);
+    const Vec3<S> p5 = K.t[4], l5 = K.R[4].col(2);
     for (int g5 = 0; g5 < 3; ++g5) {
-      const Vec3<S> p4 = rx(L[3], rotGrid(p5, g5)) + Vec3<S>(L[3].a, S(0), L[3].d);
-      const Vec3<S> l4 = rx(L[3], rotGrid(l5, g5));
+      const Vec3<S> p4 = K.R[3] * rotGrid(p5, g5) + K.t[3];
+      const Vec3<S> l4 = K.R[3] * rotGrid(l5, g5);
       for (int g4 = 0; g4 < 3; ++g4) {
-        const Vec3<S> p3 = rx(L[2], rotGrid(p4, g4)) + Vec3<S>(L[2].a, S(0), L[2].d);
-        const Vec3<S> l3 = rx(L[2], rotGrid(l4, g4));
+        const Vec3<S> p3 = K.R[2] * rotGrid(p4, g4) + K.t[2];
+        const Vec3<S> l3 = K.R[2] * rotGrid(l4, g4);
         for (int g3 = 0; g3 < 3; ++g3) {
-          const Vec3<S> p2 = rx(L[1], rotGrid(p3, g3)) + Vec3<S>(L[1].a, S(0), L[1].d);
-          const Vec3<S> l2 = rx(L[1], rotGrid(l3, g3));
+          const Vec3<S> p2 = K.R[1] * rotGrid(p3, g3) + K.t[1];
+          const Vec3<S> l2 = K.R[1] * rotGrid(l3, g3);
           F[g3 * 9 + g4 * 3 + g5] = lineQuantities(p2, l2);
         }
       }
@@ -405,14 +442,14 @@ Core<S> eigenCore(const Robot6R<S>& rb, const Mat3<S>& RT, const Vec3<S>& tT) {
   gridToTrig(F, 3, 27);
   gridToTrig(F, 9, 27);
 
-  // Right side Rz(−θ2)·G1⁻¹·Rz(−θ1)·T·G6⁻¹ applied to (origin, e_z), on the 3×3 grid.
+  // Right side Rz(−θ2)·K1⁻¹·Rz(−θ1)·K6⁻¹ applied to (origin, e_z), on the 3×3 grid
+  // (K6⁻¹ = T·G6⁻¹ for the chain as given).
   std::array<V14<S>, 9> H;
   {
-    const Vec3<S> p6 = rxT(L[5], Vec3<S>(-L[5].a, S(0), -L[5].d)), l6 = rxT(L[5], ez);
-    const Vec3<S> pT = RT * p6 + tT, lT = RT * l6;
+    const Vec3<S> pT = -(K.R[5].transpose() * K.t[5]), lT = K.R[5].row(2).transpose();
     for (int g1 = 0; g1 < 3; ++g1) {
-      const Vec3<S> p1 = rxT(L[0], Vec3<S>(rotGridInv(pT, g1) - Vec3<S>(L[0].a, S(0), L[0].d)));
-      const Vec3<S> l1 = rxT(L[0], rotGridInv(lT, g1));
+      const Vec3<S> p1 = K.R[0].transpose() * Vec3<S>(rotGridInv(pT, g1) - K.t[0]);
+      const Vec3<S> l1 = K.R[0].transpose() * rotGridInv(lT, g1);
       for (int g2 = 0; g2 < 3; ++g2)
         H[g1 * 3 + g2] = lineQuantities(rotGridInv(p1, g2), rotGridInv(l1, g2));
     }
@@ -489,6 +526,7 @@ Core<S> eigenCore(const Robot6R<S>& rb, const Mat3<S>& RT, const Vec3<S>& tT) {
   }
   out.rcond = toDouble(rc);
   out.beta = toDouble(beta);
+  if (probe) return out;
 
   std::vector<std::complex<S>> lambdas;
   if (rc > Tolerance<S>::rank()) {
@@ -622,15 +660,15 @@ Core<S> eigenCore(const Robot6R<S>& rb, const Mat3<S>& RT, const Vec3<S>& tT) {
     // u = (c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2)
     phi[0] = atan2(u(5), u(2));
     phi[1] = atan2(u(1), u(0));
-    // θ6 from the chain: Rz(θ6)·Rx(α6) = (A1···A5)ᵀ-rotation · R_T.
+    // θ6 from the loop: Rz(θ6) = (Rz(θ1)K1···Rz(θ5)K5)ᵀ-rotation · K6ᵀ-rotation.
     Mat3<S> R = Mat3<S>::Identity();
     for (int i = 0; i < 5; ++i) {
       const S c = cos(phi[i]), s = sin(phi[i]);
-      Mat3<S> Ai;
-      Ai << c, -s * L[i].ca, s * L[i].sa, s, c * L[i].ca, -c * L[i].sa, S(0), L[i].sa, L[i].ca;
-      R = R * Ai;
+      Mat3<S> Z;
+      Z << c, -s, S(0), s, c, S(0), S(0), S(0), S(1);
+      R = (R * Z * K.R[i]).eval();
     }
-    const Mat3<S> R6 = R.transpose() * RT;
+    const Mat3<S> R6 = R.transpose() * K.R[5].transpose();
     phi[5] = atan2(R6(1, 0), R6(0, 0));
     out.phi.push_back(phi);
     out.x3.push_back(x);
@@ -812,7 +850,52 @@ General6RSolution<S> solveGeneral6R(const Robot6R<S>& robot, const SE3<S>& targe
   const Vec3<S> tT = target.translation() / L;
   const SE3<S> Tn(target.so3(), tT);
 
-  const detail6r::Core<S> core = detail6r::eigenCore(rn, RT, tT);
+  const detail6r::Loop6R<S> loop = detail6r::loopOf(rn, RT, tT);
+  detail6r::Core<S> core = detail6r::eigenCore(loop);
+  sol.elimination = "theta3 last";
+  // A leading matrix singular for every θ3 offset is structural for this split (a PUMA whose
+  // wrist axes nearly meet, a UR whose axis 4 is nearly parallel to 2, 3): another joint is
+  // eliminated last, on a cyclic relabelling of the closed loop or the reversed loop, the one
+  // whose leading matrix is best conditioned (Raghavan & Roth 1993, any joint may be eliminated
+  // last; Manocha & Canny 1994; GF §11.5).
+  const double rcGood = toDouble(Tolerance<S>::precision(2));
+  const double qGood = toDouble(Tolerance<S>::rank());
+  auto score = [&](const detail6r::Core<S>& c) { return c.qRank > qGood ? c.rcond : 0.0; };
+  if (options.choose_elimination && !(score(core) > rcGood)) {
+    double best = score(core);
+    int bestShift = 0;
+    bool bestReverse = false;
+    for (int f = 1; f < 12 && !(best > rcGood); ++f) {
+      const int shift = f % 6;
+      const bool reverse = f >= 6;
+      const double sc = score(detail6r::eigenCore(detail6r::relabelled(loop, shift, reverse), true));
+      if (sc > best) {
+        best = sc;
+        bestShift = shift;
+        bestReverse = reverse;
+      }
+    }
+    const int last = detail6r::relabelledJoint(2, bestShift, bestReverse) + 1;
+    sol.notes.push_back("leading matrix ill-conditioned for every θ3 offset (rcond " +
+                        toString(core.rcond, 3) + ")" +
+                        (bestShift == 0 && !bestReverse
+                             ? std::string(": no other elimination does better")
+                             : ": eliminating θ" + std::to_string(last) + " last" +
+                                   (bestReverse ? " on the reversed loop" : "") + " (rcond " +
+                                   toString(best, 3) + ")"));
+    if (bestShift != 0 || bestReverse) {
+      detail6r::Core<S> alt = detail6r::eigenCore(detail6r::relabelled(loop, bestShift, bestReverse));
+      for (auto& phi : alt.phi) {
+        const std::array<S, 6> p = phi;
+        for (int i = 0; i < 6; ++i) {
+          const int j = detail6r::relabelledJoint(i, bestShift, bestReverse);
+          phi[j] = bestReverse ? S(-p[i]) : p[i];
+        }
+      }
+      core = std::move(alt);
+      sol.elimination = "theta" + std::to_string(last) + " last" + (bestReverse ? ", reversed loop" : "");
+    }
+  }
   sol.complex_count = core.complexCount;
   sol.leading_rcond = core.rcond;
   sol.theta3_offset = core.beta;
