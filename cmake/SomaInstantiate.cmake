@@ -62,6 +62,14 @@ foreach(scalar IN LISTS SOMA_SCALARS)
   endif()
 endforeach()
 
+# Concepts (their NAMEs) instantiated for double only in this build: empty (the whole ladder) except
+# in the `fuzz` preset, whose sanitized build (tests/fuzz/README.md, the cost measured in
+# scripts/test.sh) links the readers, which call the general-6R, closed-form IK and dynamics
+# instantiations in no scalar but double. A target that needs one of them in another scalar then
+# fails to link, naming the symbol.
+set(SOMA_INSTANTIATE_DOUBLE_ONLY "" CACHE STRING
+    "Concepts (soma_instantiate NAMEs) instantiated for double only (the fuzz preset)")
+
 function(soma_instantiate)
   cmake_parse_arguments(PARSE_ARGV 0 ARG "LADDER" "TARGET;NAME" "IMPL;SCALARS")
   if(NOT ARG_TARGET OR NOT ARG_IMPL OR ARG_UNPARSED_ARGUMENTS)
@@ -86,6 +94,9 @@ function(soma_instantiate)
     string(APPEND includes "#include \"${impl}\"\n")
     string(APPEND macros "@macro@(${macro})\n")
   endforeach()
+  if(ARG_NAME IN_LIST SOMA_INSTANTIATE_DOUBLE_ONLY)
+    set(ARG_SCALARS double)
+  endif()
   get_property(seen GLOBAL PROPERTY SOMA_INSTANTIATE_NAMES)
   if("${CMAKE_CURRENT_BINARY_DIR}/${ARG_NAME}" IN_LIST seen)
     message(FATAL_ERROR "soma_instantiate: NAME '${ARG_NAME}' used twice in ${CMAKE_CURRENT_SOURCE_DIR}")

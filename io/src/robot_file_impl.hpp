@@ -8,6 +8,7 @@
 #include "soma/io/link_inertia_file.hpp"
 #include "soma/io/number.hpp"
 #include "soma/io/pose_file.hpp"
+#include "input_precision.hpp"
 
 
 namespace soma::io {
@@ -82,7 +83,12 @@ template <class S> RobotFile<S> parseRobot(const std::string& text, const std::s
       SerialJoint<S> sj;
       sj.type = jointType(jj, where);
       if (!jj.contains("axis")) throw InvalidInput(where + ": missing \"axis\"");
-      sj.axis = vec3<S>(jj["axis"], where + " axis", path.key("axis"));
+      // Its unit defect judged at double's tolerance in every scalar, then normalised in S
+      // (input_precision.hpp): one file is one robot in all five scalars.
+      if (!jj["axis"].is_array() || jj["axis"].size() != 3) throw InvalidInput(where + " axis: expected an array of 3 numbers");
+      const auto axis = detail::readVector<S, 3>(jj["axis"], path.key("axis"));
+      if (!allFinite(axis.value)) throw InvalidInput(where + " axis has a NaN or infinite component");
+      sj.axis = detail::unitAxis<S>(axis.value, axis.inDouble, where + " axis");
       if (sj.type == JointType::Revolute) {
         if (!jj.contains("point")) throw InvalidInput(where + ": missing \"point\" (a point of the axis)");
         sj.point = vec3<S>(jj["point"], where + " point", path.key("point"));

@@ -64,6 +64,26 @@ TEMPLATE_TEST_CASE("robot file: decimal strings exact in S, number errors with t
   CHECK_THROWS_WITH(parseJointValues<S>("0", rd), "--joints: 1 values given, the robot has 2 joints");
 }
 
+TEMPLATE_TEST_CASE("robot file: a POE axis is judged at double's tolerance in every scalar, then normalised",
+                   "[io][robot]", SOMA_TEST_SCALARS) {
+  // Found by the differential fuzz harness (tests/fuzz/corpus/differential/robot_poe_near_unit_axis.json):
+  // judged at S's own tolerance, float took a 1e-3 off-unit axis that double refused and __float128
+  // and mpfr refused an axis written to 8 digits that double took.
+  using S = TestType;
+  using std::abs;
+  auto robot = [](const std::string& axis) {
+    return R"({"convention": "poe", "joints": [{"axis": )" + axis + R"(, "point": [0, 0, 0]}],
+               "home": {"quaternion": [1, 0, 0, 0], "translation": [1, 0, 0]}})";
+  };
+  const auto r = parseRobot<S>(robot("[0, 0, 1.00000001]"), "r.json");
+  const Vec3<S> a = r.robot.joints()[0].axis;
+  CHECK(abs(a.squaredNorm() - S(1)) <= S(8) * Tolerance<S>::epsilon());
+  CHECK(abs(a(2) - S(1)) <= S(8) * Tolerance<S>::epsilon());
+  CHECK(parseRobot<S>(robot(R"(["0.6", "0.8", 0])"), "r.json").robot.joints()[0].axis(0) > S(0.59));
+  CHECK_THROWS_WITH(parseRobot<S>(robot("[0, 0, 1.001]"), "r.json"),
+                    Contains("r.json: joint 1 axis is not a unit vector"));
+}
+
 TEST_CASE("robot file: 3.5e38 is a length in double, not in float", "[io][robot]") {
   CHECK(parseRobot<double>(twoR("0").replace(twoR("0").find("\"a\": 1"), 6, "\"a\": \"3.5e38\""), "r").robot.dof() == 2);
   CHECK_THROWS_WITH(parseRobot<float>(twoR("0").replace(twoR("0").find("\"a\": 1"), 6, "\"a\": \"3.5e38\""), "r"),
