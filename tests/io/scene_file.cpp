@@ -35,7 +35,7 @@ const BadFile kBadFiles[] = {
     {"bad_entity_key.json", "entities.p: unknown field \"xyz\" (a point has \"at\": [x, y, z])"},
     {"bad_top_key.json", ": unknown field \"output\" (a scene has entities, outputs, description)"},
     {"bad_scalar_name.json", "outputs.solve.scalar: \"quad\" is not one of"},
-    {"bad_bits.json", "outputs.solve.bits: expected an integer in [16, 100000] (mpfr's precision)"},
+    {"bad_bits.json", "outputs.solve.bits: \"3\" is outside 16 … 8192"},
 };
 
 const std::string kRobots = R"("arm": {"kind": "robot", "file": "studies/robots/puma560.json"},
