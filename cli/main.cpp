@@ -65,7 +65,8 @@ void bind(CLI::App* app, Spec& spec, std::vector<std::pair<CLI::App*, Spec*>>& a
       NumberText& n = numbers.emplace_back(NumberText{&o, nullptr, {}});
       c = n.given = app->add_option(o.name, n.text, o.help);
       std::string type = isInt ? "INT" : "FLOAT";
-      if (o.ranged) type += " in [" + shown(o.low) + " - " + shown(o.high) + "]";
+      auto bound = [&](double v) { return isInt ? std::to_string(static_cast<long long>(v)) : shown(v); };
+      if (o.ranged) type += " in [" + bound(o.low) + " - " + bound(o.high) + "]";
       c->type_name(type);
       if (o.showDefault) c->default_str(isInt ? std::to_string(*std::get<int*>(o.target)) : shown(*std::get<double*>(o.target)));
     } else {
