@@ -110,8 +110,10 @@ soma_hostile_test("cuspidal --pair-seconds -1" 2 "--pair-seconds: \"-1\" is outs
 foreach(e 3 6 9 12)
   soma_hostile_test("pose rotated by 1e-${e} passes its screw round trip" 0 "screw [0-9.e-]+ .*PASS"
                     ARGS pose ${H}/pose_angle_1e-${e}.json)
-  soma_hostile_test("pose rotated by 1e-${e} passes in long double" 0 "PASS"
-                    ARGS pose ${H}/pose_angle_1e-${e}.json --scalar long-double)
+  foreach(scalar long-double mpfr)
+    soma_hostile_test("pose rotated by 1e-${e} passes in ${scalar}" 0 "screw [0-9.e-]+ .*PASS"
+                      ARGS pose ${H}/pose_angle_1e-${e}.json --scalar ${scalar})
+  endforeach()
 endforeach()
 soma_hostile_test("link lengths 1e160: rank 6" 0 "\"rank\": 6" ARGS fk ${H}/robot_huge.json --joints 0.1,0.2,0.3,0.4,0.5,0.6 --json)
 soma_hostile_test("platform x1e200: the general platform's postures" 0 "complex solutions: 40 found, 40 expected .*real postures: 8 "
