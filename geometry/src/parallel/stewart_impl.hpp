@@ -498,8 +498,12 @@ template <class S> void validateStewartPlatform(const StewartPlatform<S>& P) {
     throw InvalidInput("stewart: the platform points lie farther apart than " + std::string(scalarName<S>()) + " holds");
   const S big = std::max(sb, std::max(sp, sl));
   const S eps = Tolerance<S>::epsilon();
-  if (!(sb > eps * big)) throw InvalidInput("stewart: the six base points coincide");
-  if (!(sp > eps * big)) throw InvalidInput("stewart: the six platform points coincide");
+  auto spread = [&](const S& s) {
+    return " (they lie within " + toString(s, 3) + " of each other, at the rounding level of the platform's size " +
+           toString(big, 3) + ")";
+  };
+  if (!(sb > eps * big)) throw InvalidInput("stewart: the six base points coincide" + spread(sb));
+  if (!(sp > eps * big)) throw InvalidInput("stewart: the six platform points coincide" + spread(sp));
 }
 
 template <class S> std::array<S, 6> stewartLegLengths(const StewartPlatform<S>& P, const SE3<S>& g) {
