@@ -4,6 +4,8 @@
 #include "json_output.hpp"
 #include "scalar_options.hpp"
 
+#include "soma/io/json_number.hpp"
+#include "soma/io/pose_file.hpp"
 #include "soma/io/robot_file.hpp"
 #include "soma/io/urdf_file.hpp"
 
@@ -26,37 +28,32 @@ template <class S> int fkImpl(const std::filesystem::path& file, const std::stri
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const auto sm = singularityMeasures(rf.robot, q);
   const Mat3<S> R = T.rotation();
-  const double unit = rf.degrees ? 180.0 / pi<double>() : 1.0;
   if (json) {
     nlohmann::json j;
     j["robot"] = file.string();
     j["name"] = rf.robot.name();
     j["angles"] = rf.degrees ? "degrees" : "radians";
-    nlohmann::json jq = nlohmann::json::array();
-    for (int i = 0; i < q.size(); ++i)
-      jq.push_back(toDouble(q(i)) * (rf.robot.joints()[i].type == JointType::Revolute ? unit : 1.0));
+    nlohmann::json jq = nlohmann::json::array();  // echoed as given (degrees stay exact: no round trip through radians)
+    for (const S& v : io::parseJointValues<S>(joints, rf)) jq.push_back(io::jsonNumber(v));
     j["joints"] = jq;
-    j["scalar"] = std::string(scalarName<S>());
+    io::addScalar<S>(j);
     j["seconds"] = secs;
-    nlohmann::json rot = nlohmann::json::array();
-    for (int r = 0; r < 3; ++r) rot.push_back({toDouble(R(r, 0)), toDouble(R(r, 1)), toDouble(R(r, 2))});
-    j["pose"] = {{"rotation", rot},
-                 {"translation",
-                  {toDouble(T.translation()(0)), toDouble(T.translation()(1)), toDouble(T.translation()(2))}}};
-    j["singularity"] = {{"manipulability", toDouble(sm.manipulability)},
-                        {"smallest_singular_value", toDouble(sm.smallestSingularValue)},
-                        {"condition", jsonNumber(toDouble(sm.condition))},
+    j["pose"] = io::poseJson(T);
+    j["singularity"] = {{"manipulability", io::jsonNumber(sm.manipulability)},
+                        {"smallest_singular_value", io::jsonNumber(sm.smallestSingularValue)},
+                        {"condition", io::jsonNumber(sm.condition)},
                         {"rank", sm.rank}};
     out << jsonText(j) << "\n";
     return 0;
   }
   out << fmt::format("robot: {} ({} joints)   scalar: {}\n", rf.robot.name(), rf.robot.dof(), scalarName<S>());
+  // Every number in S's digits (json_number.hpp): 17 for double, 79 for mpfr at 256 bits.
   out << "rotation:\n";
   for (int r = 0; r < 3; ++r)
-    out << fmt::format("  {:>24} {:>24} {:>24}\n", toString(R(r, 0), 17), toString(R(r, 1), 17),
-                       toString(R(r, 2), 17));
-  out << fmt::format("translation: {} {} {}\n", toString(T.translation()(0), 17),
-                     toString(T.translation()(1), 17), toString(T.translation()(2), 17));
+    out << fmt::format("  {:>24} {:>24} {:>24}\n", io::numberText(R(r, 0)), io::numberText(R(r, 1)),
+                       io::numberText(R(r, 2)));
+  out << fmt::format("translation: {} {} {}\n", io::numberText(T.translation()(0)),
+                     io::numberText(T.translation()(1)), io::numberText(T.translation()(2)));
   out << fmt::format("singularity: manipulability {}  smallest singular value {}  condition {}  rank {}\n",
                      toString(sm.manipulability, 6), toString(sm.smallestSingularValue, 6),
                      toString(sm.condition, 6), sm.rank);

@@ -8,6 +8,7 @@
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/tolerance.hpp"
 #include "soma/geometry/serial/ik.hpp"
+#include "soma/io/json_number.hpp"
 #include "soma/io/pose_file.hpp"
 #include "soma/io/robot_file.hpp"
 #include "soma/io/urdf_file.hpp"
@@ -29,10 +30,12 @@ int ikImpl(const std::filesystem::path& file, const std::string& tip, const std:
   IkOptions options;
   options.method = method;
   const IkSolution<S> sol = solveIk<S>(rf.robot, target, options);
-  const double unit = rf.degrees ? 180.0 / pi<double>() : 1.0;
-  auto jointValue = [&](const JointVector<S>& q, int i) {
-    return toDouble(q(i)) * (rf.robot.joints()[i].type == JointType::Revolute ? unit : 1.0);
+  const S unit = rf.degrees ? S(180) / pi<S>() : S(1);
+  auto jointValue = [&](const JointVector<S>& q, int i) -> S {
+    return q(i) * (rf.robot.joints()[i].type == JointType::Revolute ? unit : S(1));
   };
+  // general6r re-solves in a wider scalar when S fell short (DESIGN §3): the answer says so.
+  const bool escalated = !sol.solved_in.empty() && sol.solved_in != scalarName<S>();
   bool ok = true;
   for (const auto& r : sol.residuals)
     if (!(r <= Tolerance<S>::sqrtEpsilon())) ok = false;
@@ -41,14 +44,11 @@ int ikImpl(const std::filesystem::path& file, const std::string& tip, const std:
     j["robot"] = file.string();
     j["name"] = rf.robot.name();
     j["pose_file"] = poseFile.string();
-    const Mat3<S> R = target.rotation();
-    nlohmann::json rot = nlohmann::json::array();
-    for (int r = 0; r < 3; ++r) rot.push_back({toDouble(R(r, 0)), toDouble(R(r, 1)), toDouble(R(r, 2))});
-    const Vec3<S> t = target.translation();
-    j["pose"] = {{"rotation", rot}, {"translation", {toDouble(t(0)), toDouble(t(1)), toDouble(t(2))}}};
+    j["pose"] = io::poseJson(target);
     j["angles"] = rf.degrees ? "degrees" : "radians";
     j["method"] = sol.method;
-    j["scalar"] = std::string(scalarName<S>());
+    io::addScalar<S>(j);
+    if (escalated) j["escalated_to"] = sol.solved_in;
     j["seconds"] = sol.seconds;
     j["expected_count"] = sol.expected_count;
     j["count"] = sol.count();
@@ -57,20 +57,20 @@ int ikImpl(const std::filesystem::path& file, const std::string& tip, const std:
     nlohmann::json arr = nlohmann::json::array();
     for (std::size_t k = 0; k < sol.count(); ++k) {
       nlohmann::json jq = nlohmann::json::array();
-      for (int i = 0; i < sol.postures[k].size(); ++i) jq.push_back(jointValue(sol.postures[k], i));
-      arr.push_back({{"joints", jq}, {"residual", toDouble(sol.residuals[k])}});
+      for (int i = 0; i < sol.postures[k].size(); ++i) jq.push_back(io::jsonNumber(jointValue(sol.postures[k], i)));
+      arr.push_back({{"joints", jq}, {"residual", io::jsonNumber(sol.residuals[k])}});
     }
     j["solutions"] = arr;
     out << jsonText(j) << "\n";
     return ok ? 0 : 1;
   }
-  out << fmt::format("robot: {} ({} joints)   method: {}   scalar: {}\n", rf.robot.name(), rf.robot.dof(),
-                     sol.method, scalarName<S>());
+  out << fmt::format("robot: {} ({} joints)   method: {}   scalar: {}{}\n", rf.robot.name(), rf.robot.dof(),
+                     sol.method, scalarName<S>(), escalated ? "   escalated to " + sol.solved_in : "");
   out << fmt::format("postures: {} found, {} expected in general   time: {:.3g} s{}\n", sol.count(),
                      sol.expected_count, sol.seconds, sol.continuum ? "   (a continuum: representatives)" : "");
   for (std::size_t k = 0; k < sol.count(); ++k) {
     std::string line = fmt::format("  {:>2}:", k + 1);
-    for (int i = 0; i < sol.postures[k].size(); ++i) line += fmt::format(" {:>12.7f}", jointValue(sol.postures[k], i));
+    for (int i = 0; i < sol.postures[k].size(); ++i) line += " " + io::numberText(jointValue(sol.postures[k], i));  // S's digits
     line += fmt::format("   residual {}", toString(sol.residuals[k], 3));
     out << line << "\n";
   }

@@ -8,6 +8,7 @@
 #include "soma/algebra/dual_quaternion.hpp"
 #include "soma/algebra/screw.hpp"
 #include "soma/algebra/study_parameters.hpp"
+#include "soma/io/json_number.hpp"
 #include "soma/io/pose_file.hpp"
 
 #include <chrono>
@@ -21,19 +22,9 @@ namespace {
 
 using json = nlohmann::json;
 
-template <class D> json toJson(const Eigen::MatrixBase<D>& m) {
-  json rows = json::array();
-  for (Eigen::Index i = 0; i < m.rows(); ++i) {
-    json row = json::array();
-    for (Eigen::Index j = 0; j < m.cols(); ++j) row.push_back(toString(m(i, j)));
-    rows.push_back(m.cols() == 1 ? row[0] : row);
-  }
-  return rows;
-}
-
 template <class D> std::string toText(const Eigen::MatrixBase<D>& v) {
   std::string s = "[";
-  for (Eigen::Index i = 0; i < v.size(); ++i) s += (i ? ", " : "") + toString(v(i));
+  for (Eigen::Index i = 0; i < v.size(); ++i) s += (i ? ", " : "") + io::numberText(v(i));
   return s + "]";
 }
 
@@ -62,32 +53,32 @@ template <class S> int run(const std::filesystem::path& file, bool asJson, std::
   const Vec4<S> qv(q.w(), q.x(), q.y(), q.z());
   if (asJson) {
     json j = {{"input", file.string()},
-              {"scalar", std::string(scalarName<S>())},
               {"seconds", secs},
-              {"matrix", toJson(m)},
-              {"quaternion_wxyz", toJson(qv)},
-              {"dual_quaternion", toJson(h.coeffs())},
-              {"study_parameters", toJson(sp.coeffs())},
-              {"study_condition", toString(sp.studyCondition())},
-              {"study_defect", toString(sp.studyDefect())},
-              {"twist", toJson(xi.coeffs())},
+              {"matrix", io::jsonNumbers(m)},
+              {"quaternion_wxyz", io::jsonNumbers(qv)},
+              {"dual_quaternion", io::jsonNumbers(h.coeffs())},
+              {"study_parameters", io::jsonNumbers(sp.coeffs())},
+              {"study_condition", io::jsonNumber(sp.studyCondition())},
+              {"study_defect", io::jsonNumber(sp.studyDefect())},
+              {"twist", io::jsonNumbers(xi.coeffs())},
               {"screw",
                sc.pureTranslation
                    ? json{{"pure_translation", true},
-                          {"direction", toJson(sc.translationDirection)},
-                          {"distance", toString(sc.translationDistance)}}
+                          {"direction", io::jsonNumbers(sc.translationDirection)},
+                          {"distance", io::jsonNumber(sc.translationDistance)}}
                    : json{{"pure_translation", false},
-                          {"angle", toString(sc.theta)},
-                          {"axis", toJson(sc.axis)},
-                          {"point", toJson(sc.point)},
-                          {"pitch_per_radian", toString(sc.pitch)}}},
+                          {"angle", io::jsonNumber(sc.theta)},
+                          {"axis", io::jsonNumbers(sc.axis)},
+                          {"point", io::jsonNumbers(sc.point)},
+                          {"pitch_per_radian", io::jsonNumber(sc.pitch)}}},
               {"round_trip_residuals",
-               {{"exp(log)", toDouble(eExp)},
-                {"dual_quaternion", toDouble(eDq)},
-                {"study_parameters", toDouble(eStudy)},
-                {"screw", toDouble(eScrew)}}},
-              {"tolerance", toDouble(tol)},
+               {{"exp(log)", io::jsonNumber(eExp)},
+                {"dual_quaternion", io::jsonNumber(eDq)},
+                {"study_parameters", io::jsonNumber(eStudy)},
+                {"screw", io::jsonNumber(eScrew)}}},
+              {"tolerance", io::jsonNumber(tol)},
               {"passed", ok}};
+    io::addScalar<S>(j);
     out << jsonText(j) << "\n";
     return ok ? 0 : 1;
   }
@@ -100,15 +91,15 @@ template <class S> int run(const std::filesystem::path& file, bool asJson, std::
       << "                  a = " << toText(h.coeffs().template head<4>()) << "\n"
       << "                  c = " << toText(h.coeffs().template tail<4>()) << "\n";
   out << "  Study params    " << toText(sp.coeffs()) << "\n"
-      << "                  a·c = " << toString(sp.studyCondition())
+      << "                  a·c = " << io::numberText(sp.studyCondition())
       << ", |a·c|/(|a||c|) = " << toString(sp.studyDefect(), 3) << "  (Study quadric)\n";
   out << "  twist log       (ω; v) = " << toText(xi.coeffs()) << "\n";
   if (sc.pureTranslation)
-    out << "  screw           pure translation " << toString(sc.translationDistance)
+    out << "  screw           pure translation " << io::numberText(sc.translationDistance)
         << " along " << toText(sc.translationDirection) << "\n";
   else
-    out << "  screw           θ = " << toString(sc.theta) << " about " << toText(sc.axis)
-        << " through " << toText(sc.point) << ", pitch " << toString(sc.pitch)
+    out << "  screw           θ = " << io::numberText(sc.theta) << " about " << toText(sc.axis)
+        << " through " << toText(sc.point) << ", pitch " << io::numberText(sc.pitch)
         << " per radian  (GF §2.5.2)\n";
   out << fmt::format(
       "  round trips     exp(log) {:.3g}, dual quaternion {:.3g}, Study {:.3g}, screw {:.3g}"

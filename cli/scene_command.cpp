@@ -29,6 +29,14 @@ std::string summary(const nlohmann::json& j) {
   }
   if (kind == "cylindroid")
     s += fmt::format("   pitches {:.12g} {:.12g}", j["pitches"][0].get<double>(), j["pitches"][1].get<double>());
+  if (kind == "workspace")
+    s += fmt::format("   {} cells reached, rho_max {:.6g}, {} boundary curves", j["reached_cells"].get<int>(),
+                     j["rho_max"].get<double>(), j["boundary_curves"].get<int>());
+  if (kind == "dynamics") {
+    std::string m;
+    for (const auto& t : j["max_abs_torque"]) m += fmt::format(" {:.6g}", t.get<double>());
+    s += fmt::format("   {} samples, max |torque|{}", j["times"].size(), m);
+  }
   s += fmt::format("   residual {:.3g}   {:.3g} s{}", j["residual"].get<double>(), j["seconds"].get<double>(),
                    j["ok"].get<bool>() ? "" : "   CHECK FAILED");
   return s;

@@ -8,7 +8,9 @@
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/tolerance.hpp"
 #include "soma/geometry/parallel/solve_stewart.hpp"
+#include "soma/io/json_number.hpp"
 #include "soma/io/platform_file.hpp"
+#include "soma/io/pose_file.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -25,7 +27,7 @@ using json = nlohmann::json;
 
 json pointsJson(const auto& pts) {
   json a = json::array();
-  for (const auto& p : pts) a.push_back({toDouble(p(0)), toDouble(p(1)), toDouble(p(2))});
+  for (const auto& p : pts) a.push_back(io::jsonNumbers(p));
   return a;
 }
 
@@ -46,10 +48,10 @@ int stewartImpl(const std::filesystem::path& file, StewartMethod method, bool js
     j["base"] = pointsJson(P.base);
     j["platform"] = pointsJson(P.platform);
     json L = json::array();
-    for (const auto& l : P.legs) L.push_back(toDouble(l));
+    for (const auto& l : P.legs) L.push_back(io::jsonNumber(l));
     j["leg_lengths"] = L;
     j["method"] = sol.method;
-    j["scalar"] = std::string(scalarName<S>());
+    io::addScalar<S>(j);
     j["seconds"] = sol.seconds;
     j["expected_count"] = sol.expected_count;
     if (!numeric) j["complex_count"] = sol.complexCount();
@@ -59,13 +61,9 @@ int stewartImpl(const std::filesystem::path& file, StewartMethod method, bool js
     j["notes"] = sol.notes;
     json arr = json::array();
     for (std::size_t k = 0; k < sol.count(); ++k) {
-      const Mat3<S> R = sol.postures[k].rotation();
-      const Vec3<S> t = sol.postures[k].translation();
-      json rot = json::array();
-      for (int r = 0; r < 3; ++r) rot.push_back({toDouble(R(r, 0)), toDouble(R(r, 1)), toDouble(R(r, 2))});
-      arr.push_back({{"rotation", rot},
-                     {"translation", {toDouble(t(0)), toDouble(t(1)), toDouble(t(2))}},
-                     {"residual", toDouble(sol.residuals[k])}});
+      json posture = io::poseJson(sol.postures[k]);
+      posture["residual"] = io::jsonNumber(sol.residuals[k]);
+      arr.push_back(std::move(posture));
     }
     j["solutions"] = arr;
     out << jsonText(j) << "\n";
@@ -85,10 +83,9 @@ int stewartImpl(const std::filesystem::path& file, StewartMethod method, bool js
     const SE3<S>& g = sol.postures[k];
     const Vec3<S> t = g.translation();
     const Vec3<S> w = g.so3().log().coeffs();  // rotation vector
-    out << fmt::format("  {:>2}: t = ({:>11.6f}, {:>11.6f}, {:>11.6f})  rotation vector = ({:>9.6f}, {:>9.6f}, "
-                       "{:>9.6f})  residual {}\n",
-                       k + 1, toDouble(t(0)), toDouble(t(1)), toDouble(t(2)), toDouble(w(0)), toDouble(w(1)),
-                       toDouble(w(2)), toString(sol.residuals[k], 3));
+    out << fmt::format("  {:>2}: t = ({}, {}, {})  rotation vector = ({}, {}, {})  residual {}\n", k + 1,
+                       io::numberText(t(0)), io::numberText(t(1)), io::numberText(t(2)), io::numberText(w(0)),
+                       io::numberText(w(1)), io::numberText(w(2)), toString(sol.residuals[k], 3));
   }
   for (const auto& n : sol.notes) out << "note: " << n << "\n";
   return ok ? 0 : 1;

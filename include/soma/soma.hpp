@@ -45,6 +45,7 @@
 #include <soma/geometry/dynamics/free_body.hpp>
 #include <soma/geometry/dynamics/holonomic_constraints.hpp>
 #include <soma/geometry/dynamics/joint_integrators.hpp>
+#include <soma/geometry/dynamics/quintic_trajectory.hpp>
 #include <soma/geometry/dynamics/robot_dynamics.hpp>
 #include <soma/geometry/dynamics/serial_dynamics.hpp>
 #include <soma/geometry/dynamics/spatial_inertia.hpp>
@@ -60,6 +61,7 @@
 #include <soma/geometry/lines/regulus.hpp>
 #include <soma/geometry/lines/ruled_surface.hpp>
 #include <soma/geometry/lines/screw_axis.hpp>
+#include <soma/geometry/lines/three_line_regulus.hpp>
 #include <soma/geometry/numeric_polish.hpp>
 #include <soma/geometry/parallel/solve_stewart.hpp>
 #include <soma/geometry/parallel/stewart.hpp>
@@ -138,3 +140,4 @@
 #include <soma/render/renderer.hpp>
 #include <soma/render/scene.hpp>
 #include <soma/render/shapes.hpp>
+#include <soma/render/svg.hpp>

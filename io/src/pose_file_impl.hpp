@@ -4,6 +4,7 @@
 
 #include "soma/algebra/errors.hpp"
 #include "soma/io/json_file.hpp"
+#include "soma/io/json_number.hpp"
 #include "soma/io/number.hpp"
 
 namespace soma::io {
@@ -82,7 +83,12 @@ template <class S> SE3<S> readPose(const std::filesystem::path& file) {
   return parsePose<S>(readTextFile(file, "pose"), file.string());
 }
 
+template <class S> json poseJson(const SE3<S>& g) {
+  return {{"rotation", jsonNumbers(g.rotation())}, {"translation", jsonNumbers(g.translation())}};
+}
+
 #define SOMA_INSTANTIATE_POSE_FILE(S) namespace io {                                              \
+  template json poseJson<S>(const SE3<S>&);                                   \
   template SE3<S> parsePose<S>(const std::string&, const std::string&);       \
   template SE3<S> readPose<S>(const std::filesystem::path&);                  \
   template SE3<S> poseFromJson<S>(const json&, const std::string&); }

@@ -129,7 +129,7 @@ template <class S> RobotFile<S> readRobot(const std::filesystem::path& file) {
   return parseRobot<S>(readTextFile(file, "robot"), file.string());
 }
 
-template <class S> JointVector<S> parseJoints(const std::string& text, const RobotFile<S>& rf) {
+template <class S> std::vector<S> parseJointValues(const std::string& text, const RobotFile<S>& rf) {
   std::vector<S> vals;
   // Every comma separates two entries: "0,0," has an empty third entry (refused), not two values.
   std::size_t start = 0;
@@ -152,6 +152,11 @@ template <class S> JointVector<S> parseJoints(const std::string& text, const Rob
   if (int(vals.size()) != rf.robot.dof())
     throw InvalidInput("--joints: " + std::to_string(vals.size()) + " values given, the robot has " +
                        std::to_string(rf.robot.dof()) + " joints");
+  return vals;
+}
+
+template <class S> JointVector<S> parseJoints(const std::string& text, const RobotFile<S>& rf) {
+  const std::vector<S> vals = parseJointValues<S>(text, rf);
   JointVector<S> q(vals.size());
   for (std::size_t i = 0; i < vals.size(); ++i) {
     q(i) = vals[i];
@@ -163,6 +168,7 @@ template <class S> JointVector<S> parseJoints(const std::string& text, const Rob
 #define SOMA_INSTANTIATE_ROBOT_FILE(S) namespace io {                                                 \
   template RobotFile<S> parseRobot<S>(const std::string&, const std::string&);         \
   template RobotFile<S> readRobot<S>(const std::filesystem::path&);                    \
+  template std::vector<S> parseJointValues<S>(const std::string&, const RobotFile<S>&);  \
   template JointVector<S> parseJoints<S>(const std::string&, const RobotFile<S>&); }
 
 }  // namespace soma::io

@@ -27,7 +27,10 @@ struct EntityKindInfo {
 constexpr EntityKindInfo kEntityKinds[] = {
     {SceneEntityKind::Robot, "robot"}, {SceneEntityKind::Pose, "pose"},   {SceneEntityKind::Platform, "platform"},
     {SceneEntityKind::Point, "point"}, {SceneEntityKind::Line, "line"},   {SceneEntityKind::Screw, "screw"},
-    {SceneEntityKind::PlanarMechanism, "planar-mechanism"}};
+    {SceneEntityKind::PlanarMechanism, "planar-mechanism"}, {SceneEntityKind::LinearComplex, "linear-complex"},
+    {SceneEntityKind::Regulus, "regulus"}, {SceneEntityKind::Cylindroid, "cylindroid"},
+    {SceneEntityKind::RuledSurface, "ruled-surface"}, {SceneEntityKind::ScrewSystem, "screw-system"},
+    {SceneEntityKind::RigidBody, "rigid-body"}};
 struct OutputKindInfo {
   SceneOutputKind kind;
   std::string_view name;
@@ -39,6 +42,8 @@ constexpr OutputKindInfo kOutputKinds[] = {{SceneOutputKind::Ik, "ik"},
                                            {SceneOutputKind::Cylindroid, "cylindroid"},
                                            {SceneOutputKind::ScrewSystem, "screw-system"},
                                            {SceneOutputKind::Burmester, "burmester"},
+                                           {SceneOutputKind::Workspace, "workspace"},
+                                           {SceneOutputKind::Dynamics, "dynamics"},
                                            {SceneOutputKind::Figure, "figure"},
                                            {SceneOutputKind::Report, "report"}};
 
@@ -56,6 +61,20 @@ std::string stringField(const json& j, const char* key, const KeyPath& where) {
   return v.get<std::string>();
 }
 
+// An array of entity names: `min` to `max` strings.
+std::vector<std::string> nameList(const json& j, const char* key, const KeyPath& where, std::size_t min, std::size_t max,
+                                  const std::string& what) {
+  if (!j.contains(key)) throw InvalidInput(where.str() + ": missing \"" + key + "\" (" + what + ")");
+  const json& s = j[key];
+  if (!s.is_array() || s.size() < min || s.size() > max) throw InvalidInput(where.key(key).str() + ": expected " + what);
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (!s[i].is_string()) throw InvalidInput(where.key(key).index(i).str() + ": expected a string");
+    out.push_back(s[i].get<std::string>());
+  }
+  return out;
+}
+
 // The "kind" of an entity or output (`what`), one of the table's names.
 template <class Table> auto kindOf(const json& j, const KeyPath& where, const Table& table, const std::string& what) {
   if (!j.is_object()) throw InvalidInput(where.str() + ": an " + what + " must be a JSON object");
@@ -66,6 +85,8 @@ template <class Table> auto kindOf(const json& j, const KeyPath& where, const Ta
   throw InvalidInput(where.key("kind").str() + ": unknown " + what + " kind " + inQuotes(kind) + " (one of " +
                      kindList(table) + ")");
 }
+
+std::string entityRef(const json& j, const char* key, const KeyPath& where);
 
 // An entity: "kind" plus a file reference or an inline body (kept as text, read in each scalar).
 SceneEntity parseEntity(const std::string& name, const json& j, const std::string& origin, const std::string& path,
@@ -106,6 +127,33 @@ SceneEntity parseEntity(const std::string& name, const json& j, const std::strin
       checkKeys(body, {"coordinates", "point", "direction", "pitch"}, where.str(),
                 "(a screw has \"coordinates\": [ω; v], or \"point\", \"direction\" and \"pitch\")");
       break;
+    case SceneEntityKind::LinearComplex:
+      checkKeys(body, {"coordinates", "point", "direction", "pitch"}, where.str(),
+                "(a linear complex has \"coordinates\": [α; b], or its axis' \"point\", \"direction\" and \"pitch\")");
+      break;
+    case SceneEntityKind::Regulus:
+      checkKeys(body, {"lines"}, where.str(), "(a regulus has \"lines\": three line entities)");
+      e.uses = nameList(body, "lines", where, 3, 3, "the names of three line entities");
+      break;
+    case SceneEntityKind::Cylindroid:
+      checkKeys(body, {"screws"}, where.str(), "(a cylindroid has \"screws\": two screw entities)");
+      e.uses = nameList(body, "screws", where, 2, 2, "the names of two screw entities");
+      break;
+    case SceneEntityKind::ScrewSystem:
+      checkKeys(body, {"screws"}, where.str(), "(a screw system has \"screws\": 1 to 6 screw entities)");
+      e.uses = nameList(body, "screws", where, 1, 6, "the names of 1 to 6 screw entities");
+      break;
+    case SceneEntityKind::RuledSurface:
+      checkKeys(body, {"line", "screw", "range"}, where.str(), "(a ruled surface has line, screw, range)");
+      e.uses = {entityRef(body, "line", where), entityRef(body, "screw", where)};
+      if (body.contains("range") && (!body["range"].is_array() || body["range"].size() != 2))
+        throw InvalidInput(where.key("range").str() + ": expected [t0, t1]");
+      break;
+    case SceneEntityKind::RigidBody:
+      checkKeys(body, {"mass", "com", "inertia"}, where.str(), "(a rigid body has mass, com, inertia)");
+      for (const char* k : {"mass", "com", "inertia"})
+        if (!body.contains(k)) throw InvalidInput(where.str() + ": missing \"" + std::string(k) + "\" (a rigid body has mass, com, inertia)");
+      break;
   }
   e.body = body.dump();
   return e;
@@ -114,6 +162,15 @@ SceneEntity parseEntity(const std::string& name, const json& j, const std::strin
 std::string entityRef(const json& j, const char* key, const KeyPath& where) {
   if (!j.contains(key)) throw InvalidInput(where.str() + ": missing \"" + key + "\" (the name of an entity)");
   return stringField(j, key, where);
+}
+
+// An optional integer field in [lo, hi].
+int intField(const json& j, const char* key, const KeyPath& where, long long lo, long long hi, int fallback) {
+  if (!j.contains(key)) return fallback;
+  const json& v = j[key];
+  if (!v.is_number_integer() || v.get<long long>() < lo || v.get<long long>() > hi)
+    throw InvalidInput(where.key(key).str() + ": expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return v.get<int>();
 }
 
 SceneOutput parseOutput(const std::string& name, const json& j, const std::string& origin, const std::string& path) {
@@ -146,8 +203,13 @@ SceneOutput parseOutput(const std::string& name, const json& j, const std::strin
       o.platform = entityRef(j, "platform", where);
       break;
     case SceneOutputKind::Cylindroid: {
-      checkKeys(j, {"kind", "screws", "scalar", "bits", "needs"}, where.str(),
-                "(a cylindroid output has screws, scalar, bits, needs)");
+      checkKeys(j, {"kind", "screws", "cylindroid", "scalar", "bits", "needs"}, where.str(),
+                "(a cylindroid output has screws or cylindroid, scalar, bits, needs)");
+      if (j.contains("cylindroid")) {
+        if (j.contains("screws")) throw InvalidInput(where.str() + ": give \"screws\" or \"cylindroid\", not both");
+        o.system = stringField(j, "cylindroid", where);
+        break;
+      }
       if (!j.contains("screws")) throw InvalidInput(where.str() + ": missing \"screws\" (two screw entities)");
       const json& s = j["screws"];
       if (!s.is_array() || s.size() != 2)
@@ -173,8 +235,13 @@ SceneOutput parseOutput(const std::string& name, const json& j, const std::strin
       o.mechanism = entityRef(j, "mechanism", where);
       break;
     case SceneOutputKind::ScrewSystem: {
-      checkKeys(j, {"kind", "screws", "scalar", "bits", "needs"}, where.str(),
-                "(a screw-system output has screws, scalar, bits, needs)");
+      checkKeys(j, {"kind", "screws", "system", "scalar", "bits", "needs"}, where.str(),
+                "(a screw-system output has screws or system, scalar, bits, needs)");
+      if (j.contains("system")) {
+        if (j.contains("screws")) throw InvalidInput(where.str() + ": give \"screws\" or \"system\", not both");
+        o.system = stringField(j, "system", where);
+        break;
+      }
       if (!j.contains("screws")) throw InvalidInput(where.str() + ": missing \"screws\" (1 to 6 screw entities)");
       const json& s = j["screws"];
       if (!s.is_array() || s.empty() || s.size() > 6)
@@ -182,6 +249,41 @@ SceneOutput parseOutput(const std::string& name, const json& j, const std::strin
       for (std::size_t i = 0; i < s.size(); ++i) {
         if (!s[i].is_string()) throw InvalidInput(where.key("screws").index(i).str() + ": expected a string");
         o.screws.push_back(s[i].get<std::string>());
+      }
+      break;
+    }
+    case SceneOutputKind::Workspace:
+      checkKeys(j, {"kind", "robot", "samples", "grid", "needs"}, where.str(),
+                "(a workspace output has robot, samples, grid, needs; it works in double)");
+      o.robot = entityRef(j, "robot", where);
+      o.samples = intField(j, "samples", where, 100, 10000000, o.samples);
+      o.grid = intField(j, "grid", where, 8, 2000, o.grid);
+      break;
+    case SceneOutputKind::Dynamics: {
+      checkKeys(j, {"kind", "robot", "from", "to", "duration", "steps", "gravity", "payload", "form", "scalar", "bits", "needs"},
+                where.str(), "(a dynamics output has robot, from, to, duration, steps, gravity, payload, form, scalar, bits, needs)");
+      o.robot = entityRef(j, "robot", where);
+      for (const char* k : {"from", "to"}) {
+        if (!j.contains(k)) throw InvalidInput(where.str() + ": missing \"" + std::string(k) + "\" (the joint values)");
+        if (!j[k].is_array() || j[k].empty()) throw InvalidInput(where.key(k).str() + ": expected a non-empty array of numbers");
+      }
+      o.from = j["from"].dump();
+      o.to = j["to"].dump();
+      o.steps = intField(j, "steps", where, 1, 100000, o.steps);
+      if (j.contains("duration")) {
+        o.duration = readNumber<double>(j["duration"], where.key("duration"));
+        if (!(o.duration > 0)) throw InvalidInput(where.key("duration").str() + ": expected a positive number of seconds");
+      }
+      if (j.contains("gravity")) {
+        o.gravity = readNumber<double>(j["gravity"], where.key("gravity"));
+        if (!(o.gravity >= 0)) throw InvalidInput(where.key("gravity").str() + ": expected a number ≥ 0 (m/s² along −z)");
+      }
+      if (j.contains("payload")) o.payload = stringField(j, "payload", where);
+      if (j.contains("form")) {
+        const std::string f = stringField(j, "form", where);
+        if (f != "vector" && f != "cl062")
+          throw InvalidInput(where.key("form").str() + ": " + inQuotes(f) + " is not one of vector, cl062");
+        o.cl062 = f == "cl062";
       }
       break;
     }
@@ -201,11 +303,17 @@ SceneOutput parseOutput(const std::string& name, const json& j, const std::strin
       break;
     }
     case SceneOutputKind::Figure: {
-      checkKeys(j, {"kind", "png", "draw", "size", "needs"}, where.str(),
-                "(a figure output has png, draw, size, needs)");
-      if (!j.contains("png")) throw InvalidInput(where.str() + ": missing \"png\" (the PNG file to write)");
-      o.png = stringField(j, "png", where);
-      if (o.png.empty()) throw InvalidInput(where.key("png").str() + ": an empty file name");
+      checkKeys(j, {"kind", "png", "svg", "draw", "size", "needs"}, where.str(),
+                "(a figure output has png or svg, draw, size, needs)");
+      if (j.contains("png") && j.contains("svg")) throw InvalidInput(where.str() + ": give \"png\" or \"svg\", not both");
+      if (j.contains("svg")) {
+        o.svg = stringField(j, "svg", where);
+        if (o.svg.empty()) throw InvalidInput(where.key("svg").str() + ": an empty file name");
+      } else {
+        if (!j.contains("png")) throw InvalidInput(where.str() + ": missing \"png\" (the PNG file to write) or \"svg\"");
+        o.png = stringField(j, "png", where);
+        if (o.png.empty()) throw InvalidInput(where.key("png").str() + ": an empty file name");
+      }
       if (j.contains("draw")) {
         const json& d = j["draw"];
         if (!d.is_array() || d.empty()) throw InvalidInput(where.key("draw").str() + ": expected a non-empty array of entity names");
@@ -329,6 +437,42 @@ std::string burmesterOutputJson(const SceneOutput& o, const std::vector<Burmeste
   return j.dump();
 }
 
+std::string workspaceOutputJson(const SceneOutput& o, const WorkspaceRecord& w) {
+  json j = doubleOutputHead(o, "OMPL state sampling and the singular curves (GF §5.2.3)", w.seconds, 0, true);
+  j["robot"] = o.robot;
+  j["samples"] = w.samples;
+  j["grid"] = w.grid;
+  j["rho_max"] = w.rhoMax;
+  j["z_min"] = w.zMin;
+  j["z_max"] = w.zMax;
+  j["reached_cells"] = w.reachedCells;
+  j["reached_fraction"] = w.reachedFraction;
+  j["mean_dexterity"] = w.meanDexterity;
+  j["boundary_curves"] = w.boundaryCurves;
+  j["boundary_points"] = w.boundaryPoints;
+  return j.dump();
+}
+
+std::string dynamicsOutputJson(const SceneOutput& o, const DynamicsRecord& d, bool ok) {
+  json j = doubleOutputHead(o, "recursive Newton-Euler (GF §13.3) along a quintic", d.seconds, d.residual, ok);
+  j["scalar"] = d.scalar;
+  if (d.scalar == "mpfr") j["bits"] = d.bits;
+  j["robot"] = o.robot;
+  j["payload"] = o.payload;
+  j["gravity"] = o.gravity;
+  j["duration"] = o.duration;
+  j["times"] = d.times;
+  j["joints"] = d.joints;
+  j["torques"] = d.torques;
+  j["max_abs_torque"] = d.maxAbsTorque;
+  j["form"] = o.cl062 ? "cl062" : "vector";
+  if (o.cl062) {
+    j["momenta_cl062"] = d.momenta;
+    j["momenta_cl062_residual"] = d.momentaResidual;
+  }
+  return j.dump();
+}
+
 std::string reportOutputJson(const SceneOutput& o, double seconds) {
   json j = doubleOutputHead(o, "HTML", seconds, 0, true);
   j["html"] = o.html.string();
@@ -370,7 +514,7 @@ std::string sceneReportHtml(const SceneFile& s, const SceneOutput& report, const
   for (const json& j : outs) {
     h += "<h2 id=\"" + escapeHtml(j["output"]) + "\">" + escapeHtml(j["output"]) + " (" + escapeHtml(j["kind"]) + ")</h2>\n";
     if (j["kind"] == "figure") {
-      const std::filesystem::path png = std::filesystem::absolute(j["png"].get<std::string>());
+      const std::filesystem::path png = std::filesystem::absolute(j[j.contains("svg") ? "svg" : "png"].get<std::string>());
       h += "<img src=\"" + escapeHtml(png.lexically_relative(folder).string()) + "\" width=\"" +
            json(j["width"]).dump() + "\">\n";
     }
@@ -399,8 +543,9 @@ std::string cuspidalOutputJson(const SceneOutput& o, const CuspidalRecord& c) {
 }
 
 std::string figureOutputJson(const SceneOutput& o, const std::vector<std::string>& drawn, double seconds) {
-  json j = doubleOutputHead(o, "OSMesa", seconds, 0, true);
-  j["png"] = o.png.string();
+  json j = doubleOutputHead(o, o.svg.empty() ? "OSMesa" : "SVG", seconds, 0, true);
+  if (o.svg.empty()) j["png"] = o.png.string();
+  else j["svg"] = o.svg.string();
   j["width"] = o.width;
   j["height"] = o.height;
   j["drawn"] = drawn;
@@ -461,16 +606,52 @@ SceneFile parseScene(const std::string& text, const std::string& origin, const s
       if (std::find(o.needs.begin(), o.needs.end(), o.reported[i]) == o.needs.end()) o.needs.push_back(o.reported[i]);
     }
   }
+  // The entities an entity is built from (a regulus' lines, a cylindroid's screws, ...).
+  for (const SceneEntity& e : s.entities)
+    for (std::size_t i = 0; i < e.uses.size(); ++i) {
+      std::string key;
+      SceneEntityKind want = SceneEntityKind::Screw;
+      switch (e.kind) {
+        case SceneEntityKind::Regulus: key = "lines[" + std::to_string(i) + "]"; want = SceneEntityKind::Line; break;
+        case SceneEntityKind::RuledSurface:
+          key = i == 0 ? "line" : "screw";
+          want = i == 0 ? SceneEntityKind::Line : SceneEntityKind::Screw;
+          break;
+        default: key = "screws[" + std::to_string(i) + "]"; break;
+      }
+      const SceneEntity* u = s.entity(e.uses[i]);
+      if (!u) throw InvalidInput(e.where + "." + key + ": no entity named " + inQuotes(e.uses[i]));
+      if (u->kind != want)
+        throw InvalidInput(e.where + "." + key + ": " + inQuotes(e.uses[i]) + " is a " +
+                           std::string(sceneEntityKindName(u->kind)) + ", expected a " + std::string(sceneEntityKindName(want)));
+    }
+  // A cylindroid or screw-system output naming such an entity uses that entity's screws.
+  for (SceneOutput& o : s.outputs) {
+    if (o.system.empty()) continue;
+    const bool cyl = o.kind == SceneOutputKind::Cylindroid;
+    checkReference(s, o, cyl ? "cylindroid" : "system", o.system, cyl ? SceneEntityKind::Cylindroid : SceneEntityKind::ScrewSystem);
+    o.screws = s.entity(o.system)->uses;
+  }
   for (const SceneOutput& o : s.outputs) {
+    if (!o.payload.empty()) checkReference(s, o, "payload", o.payload, SceneEntityKind::RigidBody);
     if (!o.robot.empty()) checkReference(s, o, "robot", o.robot, SceneEntityKind::Robot);
     if (!o.pose.empty()) checkReference(s, o, "pose", o.pose, SceneEntityKind::Pose);
     if (!o.platform.empty()) checkReference(s, o, "platform", o.platform, SceneEntityKind::Platform);
     if (!o.mechanism.empty()) checkReference(s, o, "mechanism", o.mechanism, SceneEntityKind::PlanarMechanism);
     for (std::size_t i = 0; i < o.screws.size(); ++i)
       checkReference(s, o, "screws[" + std::to_string(i) + "]", o.screws[i], SceneEntityKind::Screw);
-    for (std::size_t i = 0; i < o.draw.size(); ++i)
-      if (!s.entity(o.draw[i]))
-        throw InvalidInput(o.where + ".draw[" + std::to_string(i) + "]: no entity named " + inQuotes(o.draw[i]));
+    for (std::size_t i = 0; i < o.draw.size(); ++i) {
+      const SceneEntity* e = s.entity(o.draw[i]);
+      if (!e) throw InvalidInput(o.where + ".draw[" + std::to_string(i) + "]: no entity named " + inQuotes(o.draw[i]));
+      if (!o.svg.empty() && e->kind != SceneEntityKind::PlanarMechanism)
+        throw InvalidInput(o.where + ".draw[" + std::to_string(i) + "]: an SVG figure is 2-D: " + inQuotes(o.draw[i]) + " is a " +
+                           std::string(sceneEntityKindName(e->kind)) + ", not a planar-mechanism");
+    }
+    if (!o.svg.empty() && o.draw.empty()) {
+      bool any = false;
+      for (const SceneEntity& e : s.entities) any = any || e.kind == SceneEntityKind::PlanarMechanism;
+      if (!any) throw InvalidInput(o.where + ".svg: an SVG figure is 2-D and the scene has no planar-mechanism to draw");
+    }
     for (std::size_t i = 0; i < o.needs.size(); ++i)
       if (!s.output(o.needs[i]))
         throw InvalidInput(o.where + ".needs[" + std::to_string(i) + "]: no output named " + inQuotes(o.needs[i]));
@@ -480,6 +661,19 @@ SceneFile parseScene(const std::string& text, const std::string& origin, const s
 }
 
 void validateScene(const SceneFile& s) {
+  // The entities built from others, and rigid bodies, are read once in double here (a defect is
+  // found before anything is computed, whichever output draws or uses them).
+  for (const SceneEntity& e : s.entities) {
+    switch (e.kind) {
+      case SceneEntityKind::LinearComplex: (void)sceneLinearComplex<double>(e); break;
+      case SceneEntityKind::Regulus: (void)sceneRegulus<double>(s, e); break;
+      case SceneEntityKind::Cylindroid: (void)sceneCylindroid<double>(s, e); break;
+      case SceneEntityKind::RuledSurface: (void)sceneRuledSurface<double>(s, e); break;
+      case SceneEntityKind::ScrewSystem: (void)sceneScrewSystem<double>(s, e); break;
+      case SceneEntityKind::RigidBody: (void)sceneRigidBody<double>(e); break;
+      default: break;
+    }
+  }
   // A figure draws its entities in double: each is read once here.
   for (const SceneOutput& o : s.outputs) {
     if (o.kind != SceneOutputKind::Figure) continue;
@@ -495,6 +689,7 @@ void validateScene(const SceneFile& s) {
         case SceneEntityKind::Line: (void)sceneLine<double>(e); break;
         case SceneEntityKind::Screw: (void)sceneScrew<double>(e); break;
         case SceneEntityKind::PlanarMechanism: (void)scenePlanarMechanism(e); break;
+        default: break;  // read above
       }
     }
   }
@@ -520,6 +715,17 @@ void validateScene(const SceneFile& s) {
         case SceneOutputKind::ScrewSystem:
           for (const std::string& n : o.screws) (void)sceneScrew<S>(*s.entity(n));
           break;
+        case SceneOutputKind::Workspace: (void)sceneRobot<double>(*s.entity(o.robot)); break;
+        case SceneOutputKind::Dynamics: {
+          const RobotFile<S> rf = sceneRobot<S>(*s.entity(o.robot));
+          (void)sceneTrajectoryEnds<S>(o, rf);
+          if (int(rf.links.size()) != rf.robot.dof())
+            throw InvalidInput(o.where + ".robot: a dynamics output needs the robot's link inertias (a \"links\" array of " +
+                               std::to_string(rf.robot.dof()) + " in its file), \"" + o.robot + "\" has " +
+                               std::to_string(rf.links.size()));
+          if (!o.payload.empty()) (void)sceneRigidBody<S>(*s.entity(o.payload));
+          break;
+        }
         case SceneOutputKind::Figure:
         case SceneOutputKind::Report: break;  // a figure's entities were read in double above
       }

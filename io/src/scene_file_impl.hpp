@@ -102,9 +102,11 @@ template <class S> Vec6<S> sceneScrew(const SceneEntity& e) {
   return atEntity(e, [&] { return screwFromAxis(PluckerLine<S>::pointDirection(q, d), h); });
 }
 
-template <class S> JointVector<S> sceneJoints(const SceneOutput& o, const RobotFile<S>& rf) {
-  const nlohmann::json j = nlohmann::json::parse(o.joints);
-  const KeyPath w = KeyPath(o.origin).key(o.path).key("joints");
+namespace {
+template <class S> JointVector<S> jointValues(const SceneOutput& o, const std::string& text, const char* key,
+                                              const RobotFile<S>& rf) {
+  const nlohmann::json j = nlohmann::json::parse(text);
+  const KeyPath w = KeyPath(o.origin).key(o.path).key(key);
   if (int(j.size()) != rf.robot.dof())
     throw InvalidInput(w.str() + ": " + std::to_string(j.size()) + " values given, the robot has " +
                        std::to_string(rf.robot.dof()) + " joints");
@@ -115,6 +117,74 @@ template <class S> JointVector<S> sceneJoints(const SceneOutput& o, const RobotF
   }
   return q;
 }
+}  // namespace
+
+template <class S> JointVector<S> sceneJoints(const SceneOutput& o, const RobotFile<S>& rf) {
+  return jointValues<S>(o, o.joints, "joints", rf);
+}
+
+template <class S>
+std::pair<JointVector<S>, JointVector<S>> sceneTrajectoryEnds(const SceneOutput& o, const RobotFile<S>& rf) {
+  return {jointValues<S>(o, o.from, "from", rf), jointValues<S>(o, o.to, "to", rf)};
+}
+
+template <class S> LinearComplex<S> sceneLinearComplex(const SceneEntity& e) {
+  // The same body as a screw's: the complex of the lines reciprocal to it (GF §6.6).
+  return atEntity(e, [&] { return LinearComplex<S>(sceneScrew<S>(e)); });
+}
+
+namespace {
+const SceneEntity& usedEntity(const SceneFile& scene, const SceneEntity& e, std::size_t i) {
+  const SceneEntity* u = scene.entity(e.uses.at(i));
+  if (!u) throw InvalidInput(e.where + ": no entity named \"" + e.uses.at(i) + "\"");
+  return *u;
+}
+}  // namespace
+
+template <class S> ThreeLineRegulus<S> sceneRegulus(const SceneFile& scene, const SceneEntity& e) {
+  const PluckerLine<S> a = sceneLine<S>(usedEntity(scene, e, 0)), b = sceneLine<S>(usedEntity(scene, e, 1)),
+                       c = sceneLine<S>(usedEntity(scene, e, 2));
+  return atEntity(e, [&] { return ThreeLineRegulus<S>(a, b, c); });
+}
+
+template <class S> Cylindroid<S> sceneCylindroid(const SceneFile& scene, const SceneEntity& e) {
+  const Vec6<S> a = sceneScrew<S>(usedEntity(scene, e, 0)), b = sceneScrew<S>(usedEntity(scene, e, 1));
+  return atEntity(e, [&] { return Cylindroid<S>(a, b); });
+}
+
+template <class S> SceneRuledSurface<S> sceneRuledSurface(const SceneFile& scene, const SceneEntity& e) {
+  const PluckerLine<S> l = sceneLine<S>(usedEntity(scene, e, 0));
+  const Vec6<S> xi = sceneScrew<S>(usedEntity(scene, e, 1));
+  const nlohmann::json j = sceneBody(e);
+  const KeyPath w = KeyPath(e.origin).key(e.path);
+  S t0(0), t1 = S(2) * pi<S>();
+  if (j.contains("range")) {
+    t0 = readNumber<S>(j["range"][0], w.key("range").index(0));
+    t1 = readNumber<S>(j["range"][1], w.key("range").index(1));
+    if (!(t1 > t0)) throw InvalidInput(w.key("range").str() + ": expected t0 < t1");
+  }
+  // GF §9.4: the line l swept by the one-parameter motion exp(t ξ).
+  return atEntity(e, [&] { return SceneRuledSurface<S>{RuledSurface<S>::sweep(xi, l), t0, t1}; });
+}
+
+template <class S> Eigen::Matrix<S, 6, Eigen::Dynamic> sceneScrewSystem(const SceneFile& scene, const SceneEntity& e) {
+  Eigen::Matrix<S, 6, Eigen::Dynamic> g(6, Eigen::Index(e.uses.size()));
+  for (std::size_t i = 0; i < e.uses.size(); ++i) g.col(Eigen::Index(i)) = sceneScrew<S>(usedEntity(scene, e, i));
+  return g;
+}
+
+template <class S> SpatialInertia<S> sceneRigidBody(const SceneEntity& e) {
+  const nlohmann::json j = sceneBody(e);
+  const KeyPath w = KeyPath(e.origin).key(e.path);
+  requireKeys(j, {"mass", "com", "inertia"}, e.where);
+  const S m = readNumber<S>(j["mass"], w.key("mass"));
+  if (!(m > S(0))) throw InvalidInput(w.key("mass").str() + ": the mass must be positive");
+  const Vec3<S> c = sceneVector<S, 3>(j["com"], w.key("com"));
+  const Vec6<S> I = sceneVector<S, 6>(j["inertia"], w.key("inertia"));
+  Mat3<S> Ic;  // [Ixx, Iyy, Izz, Ixy, Iyz, Ixz], as a robot file's "links" (link_inertia_file.hpp)
+  Ic << I(0), I(3), I(5), I(3), I(1), I(4), I(5), I(4), I(2);
+  return atEntity(e, [&] { return SpatialInertia<S>(m, c, Ic); });
+}
 
 #define SOMA_INSTANTIATE_SCENE_FILE(S) namespace io {                                  \
   template RobotFile<S> sceneRobot<S>(const SceneEntity&);                              \
@@ -123,6 +193,13 @@ template <class S> JointVector<S> sceneJoints(const SceneOutput& o, const RobotF
   template Vec3<S> scenePoint<S>(const SceneEntity&);                                   \
   template PluckerLine<S> sceneLine<S>(const SceneEntity&);                             \
   template Vec6<S> sceneScrew<S>(const SceneEntity&);                                   \
-  template JointVector<S> sceneJoints<S>(const SceneOutput&, const RobotFile<S>&); }
+  template JointVector<S> sceneJoints<S>(const SceneOutput&, const RobotFile<S>&);                      \
+  template LinearComplex<S> sceneLinearComplex<S>(const SceneEntity&);                                  \
+  template ThreeLineRegulus<S> sceneRegulus<S>(const SceneFile&, const SceneEntity&);                   \
+  template Cylindroid<S> sceneCylindroid<S>(const SceneFile&, const SceneEntity&);                      \
+  template SceneRuledSurface<S> sceneRuledSurface<S>(const SceneFile&, const SceneEntity&);             \
+  template Eigen::Matrix<S, 6, Eigen::Dynamic> sceneScrewSystem<S>(const SceneFile&, const SceneEntity&); \
+  template SpatialInertia<S> sceneRigidBody<S>(const SceneEntity&);                                     \
+  template std::pair<JointVector<S>, JointVector<S>> sceneTrajectoryEnds<S>(const SceneOutput&, const RobotFile<S>&); }
 
 }  // namespace soma::io

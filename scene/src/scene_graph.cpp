@@ -4,6 +4,10 @@
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/tolerance.hpp"
 #include "soma/geometry/cuspidal/cuspidality.hpp"
+#include "soma/geometry/cuspidal/workspace_analysis.hpp"
+#include "soma/geometry/dynamics/clifford_dynamics.hpp"
+#include "soma/geometry/dynamics/quintic_trajectory.hpp"
+#include "soma/geometry/dynamics/robot_dynamics.hpp"
 #include "soma/geometry/lines/cylindroid.hpp"
 #include "soma/geometry/planar/burmester_synthesis.hpp"
 #include "soma/geometry/lines/screw_axis.hpp"
@@ -11,10 +15,13 @@
 #include "soma/geometry/screws/identification.hpp"
 #include "soma/geometry/serial/ik.hpp"
 #include "soma/io/scene_output.hpp"
+#include "soma/render/plot.hpp"
 #include "soma/render/renderer.hpp"
+#include "soma/render/svg.hpp"
 #include "soma/scene/tessellation.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <fstream>
 #include <memory>
@@ -50,6 +57,13 @@ template <class S> std::string scalarTag() {
   std::string s(scalarName<S>());
   if constexpr (std::is_same_v<S, mpreal>) s += std::to_string(mpfr::mpreal::get_default_prec());
   return "[" + s + "]";
+}
+
+// The shortest decimal that reads back as x ("9.81").
+std::string shortest(double x) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, r.ptr);
 }
 
 std::string via(const std::string& reason, const std::string& id) { return reason + " via " + id; }
@@ -139,6 +153,113 @@ template <class S> OutputResult SceneGraph::compute(const io::SceneOutput& o, co
                                                                         castMatrix<double>(Vec3<S>(g.translation()))));
       break;
     }
+    case io::SceneOutputKind::Workspace: {
+      // GF §5.2.3 in double: the reachability and dexterity maps, the 3R singular boundary.
+      if constexpr (std::is_same_v<S, double>) {
+        const auto& rf = robot<double>(o.robot, reason);
+        WorkspaceOptions options;
+        options.samples = o.samples;
+        options.grid = o.grid;
+        const auto t0 = std::chrono::steady_clock::now();
+        const WorkspaceAnalysis a = analyseWorkspace(rf.robot, options);
+        io::WorkspaceRecord w;
+        w.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        w.samples = a.maps.samples;
+        w.grid = o.grid;
+        w.rhoMax = a.maps.rhoMax;
+        w.zMin = a.maps.zMin;
+        w.zMax = a.maps.zMax;
+        w.reachedCells = int(std::count_if(a.maps.hits.begin(), a.maps.hits.end(), [](int h) { return h > 0; }));
+        w.reachedFraction = a.maps.reachedFraction;
+        w.meanDexterity = a.maps.meanDexterity;
+        w.boundaryCurves = int(a.boundary.size());
+        for (const auto& c : a.boundary) w.boundaryPoints += int(c.size());
+        r.ok = w.reachedCells > 0;
+        r.json = io::workspaceOutputJson(o, w);
+      }
+      break;
+    }
+    case io::SceneOutputKind::Dynamics: {
+      const auto& rf = robot<S>(o.robot, reason);
+      const std::string modelId = "dynamics-model:" + o.robot + (o.payload.empty() ? "" : "+" + o.payload) +
+                                  "[g=" + shortest(o.gravity) + "]" + scalarTag<S>();
+      const SerialDynamics<S>& dyn = node<SerialDynamics<S>>(modelId, reason, [&](const std::string& id) {
+        // The robot file's link inertias (double) in S, each in its link's home frame (GF §13.2.2).
+        std::vector<SpatialInertia<S>> links;
+        for (const SpatialInertia<double>& l : rf.links)
+          links.emplace_back(S(l.mass()), Vec3<S>(castMatrix<S>(l.centreOfMass())), Mat3<S>(castMatrix<S>(l.inertiaAboutCentre())));
+        SerialDynamics<S> d = serialDynamicsOf<S>(rf.robot, links, S(o.gravity));
+        if (o.payload.empty()) return d;
+        // The payload's com and inertia are in the last link's frame: its home inertia (GF §13.2.3).
+        const SpatialInertia<S>& body = node<SpatialInertia<S>>("rigid-body:" + o.payload + scalarTag<S>(), via(reason, id),
+                                                                [&](const std::string&) { return io::sceneRigidBody<S>(*scene_.entity(o.payload)); });
+        JointVector<S> q0(rf.robot.dof());
+        for (int i = 0; i < rf.robot.dof(); ++i) q0(i) = -rf.robot.joints()[std::size_t(i)].offset;
+        return d.withPayload(body.transformed(rf.robot.frames(q0)[std::size_t(rf.robot.dof())]));
+      });
+      const auto ends = io::sceneTrajectoryEnds<S>(o, rf);
+      const JointVector<S>& from = ends.first;
+      const JointVector<S>& to = ends.second;
+      // The dynamics variable is θ = q + offset (robot_dynamics.hpp).
+      DynVector<S> offset(rf.robot.dof());
+      for (int i = 0; i < rf.robot.dof(); ++i) offset(i) = rf.robot.joints()[std::size_t(i)].offset;
+      const DynVector<S> th0 = DynVector<S>(from) + offset, th1 = DynVector<S>(to) + offset;
+      io::DynamicsRecord d;
+      d.scalar = std::string(scalarName<S>());
+      d.bits = o.bits;
+      d.maxAbsTorque.assign(std::size_t(rf.robot.dof()), 0.0);
+      const S T(o.duration);
+      double seconds = 0;
+      S worst(0);
+      using std::abs;
+      for (int k = 0; k <= o.steps; ++k) {
+        const TrajectorySample<S> x = quinticSample<S>(th0, th1, T, k == o.steps ? T : S(T * S(k) / S(o.steps)));
+        const auto t0 = std::chrono::steady_clock::now();
+        const DynVector<S> tau = dyn.inverseDynamics(x.theta, x.thetaDot, x.thetaDDot);
+        seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        // The closed form A θ̈ + B θ̇θ̇ + C (GF §13.2.2), an independent method: the residual.
+        const DynVector<S> closed = dyn.inverseDynamicsClosedForm(x.theta, x.thetaDot, x.thetaDDot);
+        const S scale = std::max(S(1), S(tau.cwiseAbs().maxCoeff()));
+        worst = std::max(worst, S((tau - closed).cwiseAbs().maxCoeff() / scale));
+        d.times.push_back(toDouble(x.t));
+        JointVector<S> q = x.theta - offset;
+        const double unit = rf.degrees ? 180.0 / pi<double>() : 1.0;
+        std::vector<double> qd;
+        for (int i = 0; i < q.size(); ++i)
+          qd.push_back(toDouble(q(i)) * (rf.robot.joints()[std::size_t(i)].type == JointType::Revolute ? unit : 1.0));
+        d.joints.push_back(qd);
+        d.torques.push_back(doubles(JointVector<S>(tau)));
+        for (int i = 0; i < tau.size(); ++i) d.maxAbsTorque[std::size_t(i)] = std::max(d.maxAbsTorque[std::size_t(i)], std::abs(toDouble(tau(i))));
+      }
+      d.seconds = seconds;
+      d.residual = toDouble(worst);
+      r.ok = withinSqrtEps(worst);
+      if (o.cl062) {
+        // Cl(0,6,2) (SB §5) only when the output asks for that form: its own node.
+        const auto& momenta = node<std::pair<std::vector<std::vector<double>>, double>>(
+            "momenta-cl062:" + o.name + scalarTag<S>(), reason, [&](const std::string&) {
+              namespace cd = clifford_dynamics;
+              const TrajectorySample<S> x = quinticSample<S>(th0, th1, T, S(T / S(2)));
+              const ChainConfiguration<S> c = dyn.configuration(x.theta);
+              const std::vector<Vec6<S>> v = dyn.linkVelocities(c, x.thetaDot);
+              std::pair<std::vector<std::vector<double>>, double> out{{}, 0.0};
+              S res(0);
+              for (std::size_t i = 0; i < v.size(); ++i) {
+                const Vec6<S> lp = cd::coScrewOf(cd::momentum(cd::inertiaElement(c.inertias[i]), cd::screwElement(SE3Tangent<S>(v[i]))));
+                const Vec6<S> direct = c.inertias[i] * v[i];
+                res = std::max(res, S((lp - direct).norm() / std::max(S(1), S(direct.norm()))));
+                out.first.push_back(doubles(JointVector<S>(lp)));
+              }
+              out.second = toDouble(res);
+              return out;
+            });
+        d.momenta = momenta.first;
+        d.momentaResidual = momenta.second;
+        r.ok = r.ok && momenta.second <= toDouble(Tolerance<S>::sqrtEpsilon());
+      }
+      r.json = io::dynamicsOutputJson(o, d, r.ok);
+      break;
+    }
     case io::SceneOutputKind::Figure: break;  // SceneGraph::figure, in double
     case io::SceneOutputKind::Report: break;  // SceneGraph::report
     case io::SceneOutputKind::Burmester: {
@@ -157,6 +278,7 @@ template <class S> OutputResult SceneGraph::compute(const io::SceneOutput& o, co
         double worst = 0;
         for (const planar::BurmesterPair<double>& p : pairs) {
           rec.push_back({{p.centre(0), p.centre(1)}, {p.circle(0), p.circle(1)}, p.radius, p.residual});
+          r.pairs.push_back({p.centre(0), p.centre(1), p.circle(0), p.circle(1), p.radius});
           worst = std::max(worst, p.residual);
         }
         r.ok = withinSqrtEps(worst);
@@ -240,14 +362,112 @@ const OutputResult& SceneGraph::output(const io::SceneOutput& o, const std::stri
     for (const std::string& n : o.needs) (void)output(*scene_.output(n), via(reason, id));
     if (o.kind == io::SceneOutputKind::Figure) return figure(o, via(reason, id));
     if (o.kind == io::SceneOutputKind::Report) return report(o, via(reason, id));
-    if (o.kind == io::SceneOutputKind::Cuspidal || o.kind == io::SceneOutputKind::Burmester)
+    if (o.kind == io::SceneOutputKind::Cuspidal || o.kind == io::SceneOutputKind::Burmester ||
+        o.kind == io::SceneOutputKind::Workspace)
       return compute<double>(o, via(reason, id));  // analyses in double
     setMpfrBits(o.bits);
     return withScalar(o.scalar, [&]<class S>() { return compute<S>(o, via(reason, id)); });
   });
 }
 
+OutputResult SceneGraph::figure2d(const io::SceneOutput& o, const std::string& reason) {
+  render::Plot plot;
+  plot.equalAspect = true;
+  plot.x.label = "x";
+  plot.y.label = "y";
+  plot.title = scene_.origin.empty() ? o.name : std::filesystem::path(scene_.origin).filename().string() + ": " + o.name;
+  std::vector<std::string> names;
+  std::size_t colour = 0;
+  auto circle = [](double cx, double cy, double r, std::vector<double>& xs, std::vector<double>& ys) {
+    for (int k = 0; k <= 120; ++k) {
+      xs.push_back(cx + r * std::cos(2 * pi<double>() * k / 120));
+      ys.push_back(cy + r * std::sin(2 * pi<double>() * k / 120));
+    }
+  };
+  for (const io::SceneEntity& e : scene_.entities) {
+    if (e.kind != io::SceneEntityKind::PlanarMechanism) continue;
+    if (!o.draw.empty() && std::find(o.draw.begin(), o.draw.end(), e.name) == o.draw.end()) continue;
+    names.push_back(e.name);
+    const io::PlanarScene& m = node<io::PlanarScene>("planar-mechanism:" + e.name + "[double]", reason,
+                                                     [&](const std::string&) { return io::scenePlanarMechanism(e); });
+    if (m.fourbar) {
+      // GF §5.3: the ground pivots, the crank at its angle, the circles the moving pivots keep to.
+      const io::PlanarFourBarInput& f = *m.fourbar;
+      const Vec2<double> c2 = f.c1 + f.crank * Vec2<double>(std::cos(f.crankAngle), std::sin(f.crankAngle));
+      plot.add(e.name + ": ground pivots", {f.c1(0), f.c4(0)}, {f.c1(1), f.c4(1)}, render::palette::black).markers = true;
+      plot.series.back().line = false;
+      plot.add(e.name + ": crank", {f.c1(0), c2(0)}, {f.c1(1), c2(1)}, render::palette::blue);
+      std::vector<double> xs, ys;
+      circle(f.c1(0), f.c1(1), f.crank, xs, ys);
+      plot.add("", xs, ys, render::palette::skyBlue).dashed = true;
+      xs.clear(), ys.clear();
+      circle(f.c4(0), f.c4(1), f.rocker, xs, ys);
+      plot.add("", xs, ys, render::palette::skyBlue).dashed = true;
+      continue;
+    }
+    // The positions: each frame's origin and its x axis (a tenth of the positions' extent).
+    std::vector<double> xs, ys;
+    double lo = 1e300, hi = -1e300;
+    for (const io::PlanarPosition& p : m.positions) {
+      xs.push_back(p.x), ys.push_back(p.y);
+      lo = std::min({lo, p.x, p.y}), hi = std::max({hi, p.x, p.y});
+    }
+    const double tick = std::max(0.1 * (hi - lo), 1e-3);
+    render::PlotSeries& pos = plot.add(e.name + ": positions", xs, ys, render::palette::black);
+    pos.markers = true;
+    pos.markerRadius = 6;
+    for (const io::PlanarPosition& p : m.positions)
+      plot.add("", {p.x, p.x + tick * std::cos(p.angle)}, {p.y, p.y + tick * std::sin(p.angle)}, render::palette::black);
+    // The Burmester pairs of the burmester outputs using it (GF §5.4): centre, circle, the circle
+    // point at each position.
+    for (const io::SceneOutput& u : scene_.outputs) {
+      if (u.kind != io::SceneOutputKind::Burmester || u.mechanism != e.name) continue;
+      const OutputResult& b = output(u, reason);
+      for (const OutputResult::Pair2d& q : b.pairs) {
+        const render::Color c = render::palette::cycle(colour++);
+        std::vector<double> cx, cy;
+        circle(q.cx, q.cy, q.radius, cx, cy);
+        plot.add("", cx, cy, c);
+        std::vector<double> px, py;
+        for (const io::PlanarPosition& p : m.positions) {
+          const Vec2<double> w = SE2<double>(p.angle, Vec2<double>(p.x, p.y)).act(Vec2<double>(q.px, q.py));
+          px.push_back(w(0)), py.push_back(w(1));
+        }
+        render::PlotSeries& s = plot.add("", px, py, c);
+        s.line = false;
+        s.markers = true;
+        render::PlotSeries& centre = plot.add("", {q.cx}, {q.cy}, c);
+        centre.line = false;
+        centre.markers = true;
+        centre.markerRadius = 9;
+      }
+    }
+  }
+  const bool svg = !o.svg.empty();
+  const std::filesystem::path file = svg ? o.svg : o.png;
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::filesystem::path partial = file.string() + "." + std::to_string(::getpid()) + ".partial";
+  try {
+    if (svg) render::renderPlotSvg(plot, partial, o.width, o.height);
+    else render::renderPlotPng(plot, partial, o.width, o.height);
+  } catch (const std::exception& x) {
+    std::error_code ec;
+    std::filesystem::remove(partial, ec);
+    throw InvalidInput(o.where + (svg ? ".svg" : ".png") + ": cannot write " + file.string() + " (" + x.what() + ")");
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  pending_.push_back({outputNodeId(o), partial, file});
+  OutputResult r;
+  r.name = o.name;
+  r.json = io::figureOutputJson(o, names, seconds);
+  return r;
+}
+
 OutputResult SceneGraph::figure(const io::SceneOutput& o, const std::string& reason) {
+  // 2-D when it asks for SVG or draws planar mechanisms only.
+  bool planar = !o.draw.empty();
+  for (const std::string& d : o.draw) planar = planar && scene_.entity(d)->kind == io::SceneEntityKind::PlanarMechanism;
+  if (planar || !o.svg.empty()) return figure2d(o, reason);
   auto drawn = [&](const std::string& name) {
     if (o.draw.empty()) return true;
     for (const std::string& d : o.draw)
@@ -300,6 +520,43 @@ OutputResult SceneGraph::figure(const io::SceneOutput& o, const std::string& rea
         case io::SceneEntityKind::Screw:
           return screwTessellation(screw<double>(e.name, why), kFigureHalfLength, e.name);
         case io::SceneEntityKind::Point: return pointTessellation(io::scenePoint<double>(e), e.name);
+        case io::SceneEntityKind::LinearComplex: {
+          // Its axis (a line at infinity, for an infinite-pitch complex, is not drawn).
+          const LinearComplex<double> c = io::sceneLinearComplex<double>(e);
+          if (c.isInfinitePitch()) return render::Scene{};
+          return screwTessellation(c.screw(), kFigureHalfLength, e.name);
+        }
+        case io::SceneEntityKind::Regulus: {
+          // Twelve of its lines (GF §6.5.1).
+          const ThreeLineRegulus<double> rg = io::sceneRegulus<double>(scene_, e);
+          render::Scene out;
+          for (int k = 0; k < 12; ++k) {
+            const PluckerLine<double> l(rg.member(double(k) * pi<double>() / 12));
+            if (!l.isAtInfinity()) merge(out, lineTessellation(l, kFigureHalfLength, k == 0 ? e.name : std::string()));
+          }
+          return out;
+        }
+        case io::SceneEntityKind::Cylindroid:
+          return cylindroidTessellation(io::sceneCylindroid<double>(scene_, e), kFigureHalfLength, e.name);
+        case io::SceneEntityKind::RuledSurface: {
+          // Sixteen of its rulings over its range (GF §9.4).
+          const io::SceneRuledSurface<double> rs = io::sceneRuledSurface<double>(scene_, e);
+          render::Scene out;
+          for (int k = 0; k <= 16; ++k) {
+            const PluckerLine<double> l(rs.surface.coords(rs.t0 + (rs.t1 - rs.t0) * k / 16));
+            if (!l.isAtInfinity()) merge(out, lineTessellation(l, kFigureHalfLength, k == 0 ? e.name : std::string()));
+          }
+          return out;
+        }
+        case io::SceneEntityKind::ScrewSystem: {
+          const Eigen::Matrix<double, 6, Eigen::Dynamic> g = io::sceneScrewSystem<double>(scene_, e);
+          render::Scene out;
+          for (Eigen::Index k = 0; k < g.cols(); ++k)
+            merge(out, screwTessellation(Vec6<double>(g.col(k)), kFigureHalfLength, k == 0 ? e.name : std::string()));
+          return out;
+        }
+        case io::SceneEntityKind::RigidBody:
+          return pointTessellation(io::sceneRigidBody<double>(e).centreOfMass(), e.name);
         case io::SceneEntityKind::Pose:
         case io::SceneEntityKind::PlanarMechanism: break;
       }

@@ -1,7 +1,11 @@
 // Pose files: both rotation forms, exact decimal strings, and every defect named in the message.
 #include "soma/io/pose_file.hpp"
 
+#include "soma/algebra/so3.hpp"
+
 #include "support/scalars.hpp"
+
+#include <nlohmann/json.hpp>
 
 namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
 
@@ -23,6 +27,24 @@ TEMPLATE_TEST_CASE("parsePose reads a rotation matrix or a quaternion", "[pose]"
                                          S(8) * Tolerance<S>::epsilon()));
   // A decimal string is parsed in S, not through double.
   CHECK(a.translation().z() == fromString<S>("0.1"));
+}
+
+TEMPLATE_TEST_CASE("poseJson: a pose in S's digits that parsePose reads back", "[pose][json_number]", SOMA_TEST_SCALARS) {
+  using S = TestType;
+  auto& g = test::rng();
+  for (int k = 0; k < 50; ++k) {
+    // All of S's bits: the rotation of a random rotation vector, a translation of quotients.
+    const SO3<S> R = SO3Tangent<S>(test::uniformVec<S, 3>(g, -3, 3)).exp();
+    const Vec3<S> t = test::uniformVec<S, 3>(g) / test::uniform<S>(g, 0.5, 1);
+    const SE3<S> pose(R, t);
+    const nlohmann::json j = poseJson(pose);
+    // Wider than double: decimal strings (a JSON number would round them to a double).
+    CHECK(j.at("rotation").at(0).at(0).is_string() == !(std::is_same_v<S, float> || std::is_same_v<S, double>));
+    const SE3<S> back = parsePose<S>(j.dump(), "<poseJson>");
+    // The translation exactly; the rotation within a few ulps (the reader keeps a unit quaternion).
+    CHECK((back.translation().array() == t.array()).all());
+    CHECK((back.rotation() - pose.rotation()).cwiseAbs().maxCoeff() <= Tolerance<S>::identity(8));
+  }
 }
 
 TEST_CASE("parsePose names the defect of bad input", "[pose]") {

@@ -53,6 +53,15 @@ TEMPLATE_TEST_CASE("robot file: decimal strings exact in S, number errors with t
   CHECK_THROWS_WITH(parseJoints<S>("0,,0", rf), "--joints value 2: empty");
   CHECK_THROWS_WITH(parseJoints<S>("", rf), "--joints value 1: empty");
   CHECK_THROWS_WITH(parseJoints<S>("0", rf), "--joints: 1 values given, the robot has 2 joints");
+  // In degrees: parseJointValues keeps the values as written (what fk echoes), parseJoints turns
+  // the revolute ones into radians.
+  std::string deg = twoR("0");
+  deg.insert(1, R"("angles": "degrees", )");
+  const RobotFile<S> rd = parseRobot<S>(deg, "robot.json");
+  const std::vector<S> v = parseJointValues<S>("10, -35.5", rd);
+  CHECK(v == std::vector<S>{S(10), S(-35.5)});
+  CHECK(parseJoints<S>("10, -35.5", rd)(1) == S(-35.5) * (pi<S>() / S(180)));
+  CHECK_THROWS_WITH(parseJointValues<S>("0", rd), "--joints: 1 values given, the robot has 2 joints");
 }
 
 TEST_CASE("robot file: 3.5e38 is a length in double, not in float", "[io][robot]") {

@@ -348,3 +348,164 @@ TEST_CASE("example scene burmester_five_positions: each circle point's 5 positio
 }
 
 }  // namespace SOMA_UNITY_ID
+
+namespace SOMA_UNITY_ID {
+
+namespace {
+// Standard DH frames T_0 = I, T_1, …, T_n of a robot file's table at q (radians).
+std::vector<M4> tableFrames(const json& robot, const std::vector<double>& q) {
+  const double u = robot.value("angles", "radians") == "degrees" ? M_PI / 180 : 1.0;
+  std::vector<M4> T{M4::Identity()};
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    const json& r = robot["joints"][i];
+    const double a = r["a"], al = double(r["alpha"]) * u, d = r["d"], th = double(r["theta"]) * u + q[i];
+    T.push_back(T.back() * rotZ(th) * trans(0, 0, d) * trans(a, 0, 0) * rotX(al));
+  }
+  return T;
+}
+// The torques that hold a standard-DH robot still at q against gravity g along −z, written out:
+// τ_i = Σ_b m_b g ((c_b − o_{i−1}) × ẑ)·z_{i−1} over the bodies b beyond joint i (link coms in their
+// own DH frames, the payload's in the last one) — the statics of GF §13.2.2's C_i, by hand.
+std::vector<double> holdingTorques(const json& robot, const std::vector<double>& q, double g, double payloadMass,
+                                   const Eigen::Vector3d& payloadCom) {
+  const std::vector<M4> T = tableFrames(robot, q);
+  const std::size_t n = q.size();
+  std::vector<double> masses;
+  std::vector<Eigen::Vector3d> coms;
+  for (std::size_t i = 0; i < n; ++i) {
+    const json& l = robot["links"][i];
+    masses.push_back(l["mass"]);
+    const Eigen::Vector4d c(l["com"][0], l["com"][1], l["com"][2], 1.0);
+    coms.push_back((T[i + 1] * c).head<3>());
+  }
+  masses.push_back(payloadMass);
+  coms.push_back((T[n] * Eigen::Vector4d(payloadCom(0), payloadCom(1), payloadCom(2), 1.0)).head<3>());
+  std::vector<double> tau(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d o = T[i].block<3, 1>(0, 3), z = T[i].block<3, 1>(0, 2);
+    for (std::size_t b = i; b < masses.size(); ++b)
+      tau[i] += masses[b] * g * (coms[b] - o).cross(Eigen::Vector3d::UnitZ()).dot(z);
+  }
+  return tau;
+}
+}  // namespace
+
+TEST_CASE("example scene workspace_3r: the map's extent is the arm's reach by brute force", "[scene][examples]") {
+  const json out = runScene("workspace_3r.json")["reach"];
+  const json robot = fileJson("studies/robots/cusp3r_orthogonal_wenger.json");
+  // ρ = distance from axis 1 (the base z axis); q1 does not change it.
+  // Joints 2 and 3 on a 400 × 400 grid (the grid's error in ρ is O(h²) ≈ 1e-4 of the reach).
+  // The table's A_1 at q1 = 0 and A_3 do not depend on the grid's row: the row's A_2 is formed once.
+  double rmax = 0, zmin = 1e9, zmax = -1e9;
+  const int n = 400;
+  const M4 A1 = tableFk(robot, {0});
+  const json& j2 = robot["joints"][1];
+  const json& j3 = robot["joints"][2];
+  const double u = M_PI / 180;  // the file is in degrees
+  auto dh = [&](const json& r, double q) {
+    return M4(rotZ(double(r["theta"]) * u + q) * trans(0, 0, r["d"]) * trans(r["a"], 0, 0) * rotX(double(r["alpha"]) * u));
+  };
+  REQUIRE(robot["angles"] == "degrees");
+  for (int i = 0; i < n; ++i) {
+    const M4 A12 = A1 * dh(j2, 2 * M_PI * i / n);
+    for (int j = 0; j < n; ++j) {
+      const M4 T = A12 * dh(j3, 2 * M_PI * j / n);
+      rmax = std::max(rmax, std::hypot(T(0, 3), T(1, 3)));
+      zmin = std::min(zmin, T(2, 3));
+      zmax = std::max(zmax, T(2, 3));
+    }
+  }
+  CHECK((tableFk(robot, {0, 0.4, -1.1}) - A1 * dh(j2, 0.4) * dh(j3, -1.1)).cwiseAbs().maxCoeff() <= 1e-14);
+  // rho_max is the sampled extent plus a 2% pad (workspace.hpp): within [0.99 rmax, rmax + pad].
+  // The grid misses the true extremes by at most (link lengths 4.5) × h²/2 ≈ 6e-4: slack 2e-3.
+  const double pad = 0.02 * std::max(rmax, zmax - zmin), slack = 2e-3;
+  CHECK(out["rho_max"].get<double>() >= 0.99 * rmax);
+  CHECK(out["rho_max"].get<double>() <= rmax + pad + slack);
+  CHECK(out["z_max"].get<double>() <= zmax + pad + slack);
+  CHECK(out["z_min"].get<double>() >= zmin - pad - slack);
+  CHECK(out["samples"] == 40000);
+  CHECK(out["reached_cells"].get<int>() > 0);
+  CHECK(out["boundary_curves"].get<int>() > 0);  // a 3R arm: the singular curves' images
+}
+
+TEST_CASE("example scene dynamics_puma_payload: at rest the torques hold the arm and its box against gravity", "[scene][examples]") {
+  const json all = runScene("dynamics_puma_payload.json");
+  const json robot = fileJson("studies/robots/puma560_dynamics.json");
+  const std::vector<double> from(6, 0.0);
+  std::vector<double> to;
+  for (const double d : {45.0, -60.0, 30.0, 20.0, 40.0, 10.0}) to.push_back(d * M_PI / 180);
+  for (const char* o : {"unloaded", "loaded"}) {
+    INFO(o);
+    const json& out = all[o];
+    REQUIRE(out["torques"].size() == 21);
+    const double m = std::string(o) == "loaded" ? 2.0 : 0.0;
+    // The quintic starts and ends at rest: the torques are the holding torques there.
+    const std::vector<double> t0 = holdingTorques(robot, from, 9.81, m, {0, 0, 0.05});
+    const std::vector<double> t1 = holdingTorques(robot, to, 9.81, m, {0, 0, 0.05});
+    for (std::size_t i = 0; i < 6; ++i) {
+      CHECK(out["torques"][0][i].get<double>() == Approx(t0[i]).margin(1e-9));
+      CHECK(out["torques"][20][i].get<double>() == Approx(t1[i]).margin(1e-9));
+    }
+    CHECK(out["times"][20].get<double>() == 2.0);
+    CHECK(out["joints"][20][1].get<double>() == Approx(-60).margin(1e-12));
+  }
+  CHECK_FALSE(all["unloaded"].contains("momenta_cl062"));
+  REQUIRE(all["loaded"]["momenta_cl062"].size() == 6);
+  CHECK(all["loaded"]["momenta_cl062_residual"].get<double>() <= 1e-12);
+}
+
+TEST_CASE("example scene line_geometry: the regulus lies on x²+y²−z²=1; the pencil's pitches by brute force", "[scene][examples]") {
+  const json all = runScene("line_geometry.json");
+  const io::SceneFile s = io::readScene(repoFile("examples/scenes/line_geometry.json"));
+  const ThreeLineRegulus<double> r = io::sceneRegulus<double>(s, *s.entity("hyperboloid"));
+  const io::SceneRuledSurface<double> swept = io::sceneRuledSurface<double>(s, *s.entity("swept"));
+  for (int k = 0; k < 24; ++k) {
+    for (const Eigen::Matrix<double, 6, 1>& m : {r.member(M_PI * k / 24), swept.surface.coords(2 * M_PI * k / 24)}) {
+      const PluckerLine<double> l(m);
+      for (const double mu : {-1.0, 0.5, 2.0}) {
+        const Eigen::Vector3d p = l.pointAt(mu);
+        CHECK(std::abs(p(0) * p(0) + p(1) * p(1) - p(2) * p(2) - 1) <= 1e-12);
+      }
+    }
+  }
+  const auto [hMax, hMin] = pencilPitchExtremes(screwOf({0, 0, 0}, {1, 0, 0}, 0.4), screwOf({0, 0, 0.3}, {1, 2, 0}, -0.1));
+  CHECK(all["pitches"]["pitches"][0].get<double>() == Approx(hMax).margin(1e-9));
+  CHECK(all["pitches"]["pitches"][1].get<double>() == Approx(hMin).margin(1e-9));
+  CHECK(all["system"]["dimension"] == 2);
+  // The complex (α; b) = (ẑ; 0.5 ẑ) holds the line through (1, 0, 0) along (0, 0.5, −1), by hand:
+  // b·ω + α·v = (0,0,0.5)·(0,0.5,−1) + ẑ·((1,0,0) × (0,0.5,−1)) = −0.5 + 0.5 = 0; not the one along z.
+  const LinearComplex<double> c = io::sceneLinearComplex<double>(*s.entity("complex"));
+  CHECK(c.pitch() == Approx(0.5).margin(1e-15));
+  CHECK(c.contains(PluckerLine<double>::pointDirection({1, 0, 0}, {0, 0.5, -1})));
+  CHECK_FALSE(c.contains(PluckerLine<double>::pointDirection({1, 0, 0}, {0, 0, 1})));
+  CHECK(all["figure"]["drawn"].size() == 4);
+}
+
+TEST_CASE("example scene burmester_svg: the SVG shows each pair's circle point at the five positions on its circle", "[scene][examples]") {
+  const json all = runScene("burmester_svg.json");
+  const json& out = all["pairs"];
+  CHECK((out["count"].get<int>() + out["complex_count"].get<int>()) == 4);
+  const json& pos = fileJson("examples/scenes/burmester_svg.json")["entities"]["task"]["positions"];
+  for (const auto& p : out["pairs"]) {
+    const Eigen::Vector2d m(p["circle_point"][0].get<double>(), p["circle_point"][1].get<double>());
+    const Eigen::Vector2d c(p["centre"][0].get<double>(), p["centre"][1].get<double>());
+    for (const auto& q : pos) {
+      const Eigen::Vector2d at = Eigen::Rotation2Dd(double(q["angle"])) * m + Eigen::Vector2d(q["x"], q["y"]);
+      CHECK((at - c).norm() == Approx(p["radius"].get<double>()).epsilon(1e-8));
+    }
+  }
+  const json& fig = all["drawing"];
+  CHECK(fig["svg"] == "burmester_svg.svg");
+  CHECK(fig["drawn"] == json::array({"linkage", "task"}));
+  std::ifstream in("burmester_svg.svg");
+  const std::string svg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  REQUIRE(svg.rfind("<?xml", 0) == 0);
+  CHECK(svg.find("</svg>") != std::string::npos);
+  // A marker per position, per pair its centre and the circle point at each position, the two
+  // ground pivots (the legend adds its own).
+  std::size_t circles = 0;
+  for (std::size_t k = svg.find("<circle"); k != std::string::npos; k = svg.find("<circle", k + 1)) ++circles;
+  CHECK(circles >= 5 + 6 * out["count"].get<std::size_t>() + 2);
+}
+
+}  // namespace SOMA_UNITY_ID

@@ -219,4 +219,33 @@ TEST_CASE("scene graph: an output that is not in the scene", "[scene]") {
   CHECK_THROWS_WITH(g.evaluate({"nope"}), Contains("has no output named \"nope\""));
 }
 
+TEST_CASE("scene graph: Cl(0,6,2) momenta are built only when a dynamics output asks for that form", "[scene][trace]") {
+  const char* text = R"({
+    "entities": {
+      "arm": {"kind": "robot", "file": "studies/robots/puma560_dynamics.json"},
+      "box": {"kind": "rigid-body", "mass": 2, "com": [0, 0, 0.1], "inertia": [0.01, 0.01, 0.01, 0, 0, 0]}
+    },
+    "outputs": {
+      "torques": {"kind": "dynamics", "robot": "arm", "from": [0, 0, 0, 0, 0, 0], "to": [60, -30, 45, 0, 30, 0], "steps": 4},
+      "loaded": {"kind": "dynamics", "robot": "arm", "from": [0, 0, 0, 0, 0, 0], "to": [60, -30, 45, 0, 30, 0], "steps": 4,
+                 "payload": "box", "form": "cl062"}
+    }
+  })";
+  io::SceneFile s = io::parseScene(text, "scene.json", soma::test::repoFile(""));
+  io::validateScene(s);
+  SceneGraph g(std::move(s));
+  const SceneResult plain = g.evaluate({"torques"});
+  CHECK(ids(plain) == std::vector<std::string>{"robot:arm[double]", "dynamics-model:arm[g=9.81][double]", "dynamics:torques"});
+  for (const TraceEntry& t : plain.trace) CHECK(t.id.find("cl062") == std::string::npos);
+  CHECK(plain.ok());
+  const SceneResult loaded = g.evaluate({"loaded"});
+  // The robot is not read again; the payload model and the momenta are new nodes.
+  CHECK(ids(loaded) == std::vector<std::string>{"rigid-body:box[double]", "dynamics-model:arm+box[g=9.81][double]",
+                                                "momenta-cl062:loaded[double]", "dynamics:loaded"});
+  CHECK(loaded.ok());
+  const std::string& j = loaded.output("loaded")->json;
+  CHECK(j.find("\"momenta_cl062\"") != std::string::npos);
+  CHECK(plain.output("torques")->json.find("momenta_cl062") == std::string::npos);
+}
+
 }  // namespace SOMA_UNITY_ID

@@ -758,7 +758,8 @@ std::string studyListJson(const std::vector<const Study*>& studies) {
                  {"title", s->title},
                  {"source", s->source},
                  {"chapter", s->chapter},
-                 {"scalar_generic", s->scalarGeneric}});
+                 {"scalar_generic", s->scalarGeneric},
+                 {"runs_in", s->scalarGeneric ? "--scalar" : "double"}});  // the text's `scalars` column
   return a.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 

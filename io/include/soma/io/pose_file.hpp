@@ -23,7 +23,13 @@ template <class S> SE3<S> readPose(const std::filesystem::path& file);
 /// `origin` names it in messages ("robot.json: home").
 template <class S> SE3<S> poseFromJson(const nlohmann::json& j, const std::string& origin);
 
+/// The pose file's JSON of g, in S's digits (json_number.hpp): {"rotation": [[3x3]], "translation":
+/// [x, y, z]}, each number a JSON number (float, double) or a decimal string (the wider scalars).
+/// readPose/poseFromJson read it back exactly. The one writer of a pose in every command's output.
+template <class S> nlohmann::json poseJson(const SE3<S>& g);
+
 #define SOMA_POSE_EXTERN(S)                                                          \
+  extern template nlohmann::json poseJson<S>(const SE3<S>&);                         \
   extern template SE3<S> parsePose<S>(const std::string&, const std::string&);       \
   extern template SE3<S> readPose<S>(const std::filesystem::path&);                  \
   extern template SE3<S> poseFromJson<S>(const nlohmann::json&, const std::string&);

@@ -33,11 +33,15 @@ template <class S> RobotFile<S> readRobot(const std::filesystem::path& file);
 /// Parse "q1,q2,..." (decimal numbers exact in S, spaces around an entry allowed); the robot's
 /// angle unit applies to revolute joints. Throws InvalidInput naming the bad entry.
 template <class S> JointVector<S> parseJoints(const std::string& text, const RobotFile<S>& robot);
+/// The values of "q1,q2,..." as written (degrees when the robot file says so), exact in S: what a
+/// command echoes. The same checks and messages as parseJoints.
+template <class S> std::vector<S> parseJointValues(const std::string& text, const RobotFile<S>& robot);
 
 #define SOMA_ROBOT_FILE_EXTERN(S)                                                              \
   extern template RobotFile<S> parseRobot<S>(const std::string&, const std::string&);          \
   extern template RobotFile<S> readRobot<S>(const std::filesystem::path&);                     \
-  extern template JointVector<S> parseJoints<S>(const std::string&, const RobotFile<S>&);
+  extern template JointVector<S> parseJoints<S>(const std::string&, const RobotFile<S>&);      \
+  extern template std::vector<S> parseJointValues<S>(const std::string&, const RobotFile<S>&);
 SOMA_FOR_EACH_SCALAR(SOMA_ROBOT_FILE_EXTERN)
 #undef SOMA_ROBOT_FILE_EXTERN
 

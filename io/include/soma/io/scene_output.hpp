@@ -52,13 +52,35 @@ struct BurmesterPairRecord {
 };
 std::string burmesterOutputJson(const SceneOutput& o, const std::vector<BurmesterPairRecord>& pairs, int complexPairs,
                                 double residual, double seconds, bool ok);
+/// workspace (GF §5.2.3): the maps of analyseWorkspace as plain values (io does not link the
+/// cuspidal library): "samples", "grid", "rho_max", "z_min", "z_max", "reached_cells",
+/// "reached_fraction", "mean_dexterity", "boundary_curves", "boundary_points".
+struct WorkspaceRecord {
+  int samples = 0, grid = 0, reachedCells = 0, boundaryCurves = 0, boundaryPoints = 0;
+  double rhoMax = 0, zMin = 0, zMax = 0, reachedFraction = 0, meanDexterity = 0, seconds = 0;
+};
+std::string workspaceOutputJson(const SceneOutput& o, const WorkspaceRecord& w);
+/// dynamics (GF §13.3): "times" (s), "joints" (each sample's θ, the robot's unit), "torques"
+/// (N·m or N, per sample), "max_abs_torque" (per joint), "payload", "gravity"; "residual" is the
+/// largest |τ_RNE − τ_closed-form| relative to max(1, |τ|) (two methods, GF §13.2.2 and §13.3);
+/// with "form": "cl062" also "momenta_cl062": each link's momentum at the middle sample as a
+/// Cl(0,6,2) co-screw (l, p) and "momenta_cl062_residual" (against N q̇ in 6-vector form).
+struct DynamicsRecord {
+  std::string scalar;
+  int bits = 0;
+  std::vector<double> times;
+  std::vector<std::vector<double>> joints, torques, momenta;
+  std::vector<double> maxAbsTorque;
+  double residual = 0, momentaResidual = 0, seconds = 0;
+};
+std::string dynamicsOutputJson(const SceneOutput& o, const DynamicsRecord& d, bool ok);
 /// report: "html", "outputs" (the outputs shown).
 std::string reportOutputJson(const SceneOutput& o, double seconds);
 /// The report's HTML page: a table of the outputs (name, kind, method, scalar, residual, seconds,
 /// ok) and a section per output with its JSON (`outputJson`, in the report's order) and, for a
 /// figure, its PNG (linked relative to the page's folder).
 std::string sceneReportHtml(const SceneFile& s, const SceneOutput& report, const std::vector<std::string>& outputJson);
-/// figure: "png", "width", "height", "drawn" (the entities drawn), "seconds" (the render).
+/// figure: "png" (or "svg"), "width", "height", "drawn" (the entities drawn), "seconds" (the render).
 std::string figureOutputJson(const SceneOutput& o, const std::vector<std::string>& drawn, double seconds);
 
 #define SOMA_SCENE_OUTPUT_EXTERN(S)                                                                          \

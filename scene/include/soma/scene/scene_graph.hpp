@@ -37,6 +37,12 @@ struct OutputResult {
   std::vector<SE3<double>> poses;
   /// cuspidal: the witness path's joint states (radians), drawn as the tool's trace.
   std::vector<std::vector<double>> path;
+  /// burmester: each real pair's centre (fixed frame), circle point (moving frame) and radius,
+  /// drawn by 2-D figures.
+  struct Pair2d {
+    double cx = 0, cy = 0, px = 0, py = 0, radius = 0;
+  };
+  std::vector<Pair2d> pairs;
 };
 
 struct SceneResult {
@@ -72,6 +78,8 @@ class SceneGraph {
   const OutputResult& output(const io::SceneOutput& o, const std::string& reason);
   template <class S> OutputResult compute(const io::SceneOutput& o, const std::string& via);
   OutputResult figure(const io::SceneOutput& o, const std::string& reason);
+  /// A figure drawing only planar mechanisms (or asking for SVG): the 2-D plot of them.
+  OutputResult figure2d(const io::SceneOutput& o, const std::string& reason);
   OutputResult report(const io::SceneOutput& o, const std::string& reason);
   SceneResult run(const std::vector<const io::SceneOutput*>& outputs);
 
