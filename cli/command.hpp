@@ -19,13 +19,16 @@ struct Option {
   bool required = false;
   bool showDefault = false;             ///< print the default value in --help
   std::vector<std::string> oneOf;       ///< allowed values (empty: any)
-  bool ranged = false;                  ///< an int within [low, high]
-  int low = 0, high = 0;
+  /// An int or double option is bound as text and read by io's number reader (parseInteger,
+  /// parseDecimal: decimal only, no hex, no inf) within [low, high]; main.cpp exits 2 with a
+  /// message naming the flag, the value and the range otherwise.
+  bool ranged = false;
+  double low = 0, high = 0;
 
   Option& mustBeGiven() { return required = true, *this; }
   Option& withDefault() { return showDefault = true, *this; }
   Option& among(std::vector<std::string> values) { return oneOf = std::move(values), *this; }
-  Option& within(int lo, int hi) { return ranged = true, low = lo, high = hi, *this; }
+  Option& within(double lo, double hi) { return ranged = true, low = lo, high = hi, *this; }
 };
 
 /// A subcommand's command line: its name, help, options and nested subcommands (`study list`).

@@ -8,6 +8,7 @@
 // output). With --map: a parameter-space map of cusp counts (parameter_map.hpp). Bad input →
 // InvalidInput (the caller exits 2).
 #include "command.hpp"
+#include "json_output.hpp"
 
 #include "soma/algebra/errors.hpp"
 #include "soma/studies/cuspidal_figures.hpp"
@@ -57,7 +58,7 @@ int cuspidalMapCommand(const std::filesystem::path& file, const std::string& map
     j["decoupled"] = m.decoupled;
     j["threads"] = m.threads;
     j["seconds"] = m.seconds;
-    out << j.dump(2) << "\n";
+    out << jsonText(j) << "\n";
     return 0;
   }
   out << fmt::format("robot: {} (3R arm), map over {} ∈ [{}, {}] ({} values) × {} ∈ [{}, {}] ({} values)\n", name,
@@ -104,7 +105,7 @@ int cuspidal6RCommand(const io::RobotFile<double>& rf, const std::filesystem::pa
       j["note"] = w.note;
     }
     j["seconds"] = w.seconds;
-    out << j.dump(2) << "\n";
+    out << jsonText(j) << "\n";
     return 0;
   }
   out << fmt::format("robot: {} (6R, IK by {})\n", robot.name().empty() ? file.string() : robot.name(), w.ikMethod);
@@ -192,7 +193,7 @@ int cuspidalCommand(const std::filesystem::path& file, bool json, const std::str
       jw["seconds"] = w.seconds;
       j["witness"] = jw;
     }
-    out << j.dump(2) << "\n";
+    out << jsonText(j) << "\n";
     return 0;
   }
   out << fmt::format("robot: {} (3R arm)\n", robot.name().empty() ? file.string() : robot.name());
@@ -235,9 +236,9 @@ class CuspidalCommand : public Command {
     spec.add("--png", png_, "joint-space figure (also STEM_section.png, STEM_witness.png)");
     spec.add("--map", map_, "cusp-count map over two DH lengths of the robot: X,Y with each NAME:MIN:MAX:N "
                             "(NAME a1..a3, d1..d3), e.g. a2:0.5:4:100,a3:0.2:3:100");
-    spec.add("--threads", threads_, "--map: TBB threads (default: all cores)");
-    spec.add("--poses", poses_, "6R: random poses to try (fixed seed)").withDefault();
-    spec.add("--pair-seconds", pairSeconds_, "6R: OMPL time per same-sign posture pair").withDefault();
+    spec.add("--threads", threads_, "--map: TBB threads (default 0: all cores)").within(0, 1024);
+    spec.add("--poses", poses_, "6R: random poses to try (fixed seed)").within(1, 10000).withDefault();
+    spec.add("--pair-seconds", pairSeconds_, "6R: OMPL time per same-sign posture pair").within(0.001, 3600).withDefault();
   }
   int run(const Spec&, const Invocation&) override {
     if (!map_.empty()) return cuspidalMapCommand(robot_, map_, threads_, json_, png_, std::cout);

@@ -1,6 +1,7 @@
 // `soma fk ROBOT.json|ROBOT.urdf [--tip LINK] --joints q1,q2,... [--json]` (DESIGN §6): the tool pose T(q), and the
 // singularity measures of the configuration, in any scalar type.
 #include "command.hpp"
+#include "json_output.hpp"
 #include "scalar_options.hpp"
 
 #include "soma/io/json_number.hpp"
@@ -42,7 +43,7 @@ template <class S> int fkImpl(const std::filesystem::path& file, const std::stri
                         {"smallest_singular_value", io::jsonNumber(sm.smallestSingularValue)},
                         {"condition", io::jsonNumber(sm.condition)},
                         {"rank", sm.rank}};
-    out << j.dump(2) << "\n";
+    out << jsonText(j) << "\n";
     return 0;
   }
   out << fmt::format("robot: {} ({} joints)   scalar: {}\n", rf.robot.name(), rf.robot.dof(), scalarName<S>());

@@ -2,6 +2,7 @@
 // real posture of the robot for the pose, each with its residual, the method, the expected count
 // and the time.
 #include "command.hpp"
+#include "json_output.hpp"
 #include "scalar_options.hpp"
 
 #include "soma/algebra/errors.hpp"
@@ -60,7 +61,7 @@ int ikImpl(const std::filesystem::path& file, const std::string& tip, const std:
       arr.push_back({{"joints", jq}, {"residual", io::jsonNumber(sol.residuals[k])}});
     }
     j["solutions"] = arr;
-    out << j.dump(2) << "\n";
+    out << jsonText(j) << "\n";
     return ok ? 0 : 1;
   }
   out << fmt::format("robot: {} ({} joints)   method: {}   scalar: {}{}\n", rf.robot.name(), rf.robot.dof(),

@@ -8,6 +8,7 @@
 //    circuits, the pose, and the instantaneous invariants of the coupler motion (GF §5.3–5.4).
 // Runs in double. Bad input → InvalidInput (the caller prints it and exits 2).
 #include "command.hpp"
+#include "json_output.hpp"
 
 #include "soma/algebra/errors.hpp"
 #include "soma/geometry/planar/burmester_synthesis.hpp"
@@ -297,7 +298,7 @@ int planarCommand(const std::filesystem::path& file, bool asJson, const std::str
   }
   o.j["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!png.empty()) o.j["png"] = png;
-  if (asJson) out << o.j.dump(2) << "\n";
+  if (asJson) out << jsonText(o.j) << "\n";
   else out << o.text << (png.empty() ? "" : "figure: " + png + "\n");
   return 0;
 }

@@ -2,6 +2,7 @@
 // quaternion, dual quaternion, Study parameters, twist (log) and screw (Chasles) — with the
 // round-trip residual of each conversion, in any scalar type.
 #include "command.hpp"
+#include "json_output.hpp"
 #include "scalar_options.hpp"
 
 #include "soma/algebra/dual_quaternion.hpp"
@@ -78,7 +79,7 @@ template <class S> int run(const std::filesystem::path& file, bool asJson, std::
               {"tolerance", io::jsonNumber(tol)},
               {"passed", ok}};
     io::addScalar<S>(j);
-    out << j.dump(2) << "\n";
+    out << jsonText(j) << "\n";
     return ok ? 0 : 1;
   }
   out << fmt::format("pose {} ({}, {} significant bits)\n", file.string(), scalarName<S>(),

@@ -19,7 +19,7 @@ void ScalarOptions::declare(Spec& spec) {
   spec.add("--scalar", scalar, "scalar type of scalar-generic studies: " + scalarNames())
       .among({"float", "double", "long-double", "float128", "mpfr"})
       .withDefault();
-  spec.add("--bits", bits, "mpfr precision in bits (with --scalar mpfr)").within(16, 100000).withDefault();
+  spec.add("--bits", bits, "mpfr precision in bits (with --scalar mpfr)").within(16, 8192).withDefault();
 }
 
 ScalarKind ScalarOptions::apply() const {

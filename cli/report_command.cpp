@@ -34,6 +34,7 @@ class ReportCommand : public Command {
     const ScalarKind kind = scalar_.apply();
     const bool figures = !noFigures_;
     const auto selected = selectStudies(only_);
+    requireWritableFolder(out_);
     RunOptions opt;
     opt.scalar = kind;
     opt.outDir = out_;

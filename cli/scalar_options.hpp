@@ -12,7 +12,7 @@ struct ScalarOptions {
   std::string scalar = "double";
   int bits = 256;
 
-  /// Adds --scalar (one of float double long-double float128 mpfr) and --bits (16..100000).
+  /// Adds --scalar (one of float double long-double float128 mpfr) and --bits (16..8192).
   void declare(Spec& spec);
   /// Sets the mpfr precision and returns the kind (the name was already checked by the parser).
   ScalarKind apply() const;

@@ -2,6 +2,7 @@
 // outputs (or only those named), built lazily by the scene graph; --trace lists every node built,
 // its time and which output needed it.
 #include "command.hpp"
+#include "json_output.hpp"
 
 #include "soma/algebra/errors.hpp"
 #include "soma/io/json_number.hpp"
@@ -68,7 +69,7 @@ int sceneCommand(const std::string& file, const std::vector<std::string>& only, 
       for (const auto& e : r.trace) t.push_back({{"id", e.id}, {"seconds", e.seconds}, {"reason", e.reason}});
       j["trace"] = t;
     }
-    out << j.dump(2) << "\n";
+    out << jsonText(j) << "\n";
     return r.ok() ? 0 : 1;
   }
   out << fmt::format("scene: {}   outputs: {} of {}\n", file, r.outputs.size(), graph.scene().outputs.size());

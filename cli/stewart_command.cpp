@@ -2,6 +2,7 @@
 // of a Stewart–Gough platform for its six leg lengths (forward kinematics), with the expected
 // count (40), the complex count found, each posture's residual and the time.
 #include "command.hpp"
+#include "json_output.hpp"
 #include "scalar_options.hpp"
 
 #include "soma/algebra/errors.hpp"
@@ -65,7 +66,7 @@ int stewartImpl(const std::filesystem::path& file, StewartMethod method, bool js
       arr.push_back(std::move(posture));
     }
     j["solutions"] = arr;
-    out << j.dump(2) << "\n";
+    out << jsonText(j) << "\n";
     return ok ? 0 : 1;
   }
   out << fmt::format("platform: {}   method: {}   scalar: {}\n", file.string(), sol.method, scalarName<S>());

@@ -1,6 +1,7 @@
 // `soma study list [--json]` and `soma study run ID... [--scalar T] [--bits N] [--out DIR]
 // [--no-figures] [--json]`: the registered studies, one per catalogue item (docs/cli.md).
 #include "command.hpp"
+#include "json_output.hpp"
 #include "scalar_options.hpp"
 #include "study_output.hpp"
 
@@ -41,6 +42,7 @@ class StudyCommand : public Command {
     }
     const ScalarKind kind = scalar_.apply();
     const auto selected = selectStudies(ids_);
+    if (!noFigures_) requireWritableFolder(out_);
     RunOptions opt;
     opt.scalar = kind;
     opt.outDir = out_;
@@ -55,7 +57,7 @@ class StudyCommand : public Command {
     if (runJson_) {
       nlohmann::json arr = nlohmann::json::array();
       for (const auto& r : results) arr.push_back(nlohmann::json::parse(studyJson(r)));
-      std::cout << arr.dump(2) << "\n";
+      std::cout << jsonText(arr) << "\n";
     } else {
       std::cout << formatSummaryLine(sum) << "\n";
     }

@@ -6,6 +6,7 @@
 // reachability map to FILE, the dexterity map to STEM_dexterity.png and, with a plan,
 // σ_min along the path to STEM_path.png. Bad input → InvalidInput (the caller exits 2).
 #include "command.hpp"
+#include "json_output.hpp"
 
 #include "soma/algebra/errors.hpp"
 #include "soma/io/robot_file.hpp"
@@ -109,7 +110,7 @@ int workspaceCommand(const std::filesystem::path& file, const WorkspaceCommandOp
       p["seconds"] = plan->seconds;
       j["plan"] = p;
     }
-    out << j.dump(2) << "\n";
+    out << jsonText(j) << "\n";
     return 0;
   }
   out << fmt::format("robot: {} ({} joints)\n", name, robot.dof());
@@ -140,13 +141,13 @@ class WorkspaceCommand : public Command {
     spec.help = "reachability and dexterity maps from OMPL samples, the singular "
                 "boundary, a plan keeping away from singularities";
     spec.add("robot", robot_, "robot JSON (DESIGN §6)").mustBeGiven();
-    spec.add("--samples", o_.samples, "postures sampled within the joint limits").withDefault();
-    spec.add("--grid", o_.grid, "cells per side of the (ρ, z) maps").withDefault();
+    spec.add("--samples", o_.samples, "postures sampled within the joint limits").within(1, 1e7).withDefault();
+    spec.add("--grid", o_.grid, "cells per side of the (ρ, z) maps").within(8, 2048).withDefault();
     spec.add("--png", o_.png, "reachability map (also STEM_dexterity.png, STEM_path.png)");
     spec.add("--from", o_.from, "start posture q1,q2,... (the robot's angle unit)");
     spec.add("--to", o_.to, "goal posture q1,q2,...");
-    spec.add("--margin", o_.margin, "minimum σmin along the plan (dimensionless)").withDefault();
-    spec.add("--seconds", o_.seconds, "planning time limit").withDefault();
+    spec.add("--margin", o_.margin, "minimum σmin along the plan (dimensionless)").within(0, 1000).withDefault();
+    spec.add("--seconds", o_.seconds, "planning time limit (seconds)").within(0.001, 3600).withDefault();
     spec.flag("--json", o_.json, "print one JSON object");
   }
   int run(const Spec&, const Invocation&) override { return workspaceCommand(robot_, o_, std::cout); }

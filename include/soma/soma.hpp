@@ -18,6 +18,7 @@
 #include <soma/algebra/polynomial.hpp>
 #include <soma/algebra/quaternion.hpp>
 #include <soma/algebra/reciprocal_product.hpp>
+#include <soma/algebra/safe_norm.hpp>
 #include <soma/algebra/screw_bracket.hpp>
 #include <soma/algebra/screw.hpp>
 #include <soma/algebra/se2.hpp>

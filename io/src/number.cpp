@@ -64,7 +64,7 @@ std::string detail::decimalDefect(std::string_view t) {
   std::string s = lower(t);
   if (!s.empty() && (s[0] == '+' || s[0] == '-')) s.erase(0, 1);
   if (s.rfind("0x", 0) == 0) return " (hexadecimal)";
-  if (s == "nan" || s.rfind("nan(", 0) == 0 || s == "inf" || s == "infinity") return " (NaN and infinity are not numbers of a file)";
+  if (s == "nan" || s.rfind("nan(", 0) == 0 || s == "inf" || s == "infinity") return " (NaN and infinity are not numbers soma reads)";
   return "";
 }
 

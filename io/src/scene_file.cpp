@@ -345,12 +345,8 @@ SceneOutput parseOutput(const std::string& name, const json& j, const std::strin
     if (!k) throw InvalidInput(where.key("scalar").str() + ": " + inQuotes(s) + " is not one of " + scalarNames());
     o.scalar = *k;
   }
-  if (j.contains("bits")) {
-    const json& b = j["bits"];
-    if (!b.is_number_integer() || b.get<long long>() < 16 || b.get<long long>() > 100000)
-      throw InvalidInput(where.key("bits").str() + ": expected an integer in [16, 100000] (mpfr's precision)");
-    o.bits = b.get<int>();
-  }
+  if (j.contains("bits"))  // mpfr's precision, the range of --bits (docs/cli.md)
+    o.bits = int(readInteger(j["bits"], where.key("bits").str(), 16, 8192));
   if (j.contains("needs")) {
     const json& n = j["needs"];
     if (!n.is_array()) throw InvalidInput(where.key("needs").str() + ": expected an array of output names");

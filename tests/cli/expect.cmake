@@ -1,8 +1,14 @@
 # Run a command and check its exit code and output (stdout + stderr):
 #   cmake -DCMD="soma;study;run;x" -DRC=2 -DMATCH="regex" -P expect.cmake
 # Used by CTest to test the `soma` command line's contract (DESIGN §6, §10).
-execute_process(COMMAND ${CMD} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
-                TIMEOUT 600)
+# STDOUT=FILE: the command's stdout goes to FILE (e.g. /dev/full) and only stderr is matched.
+if(DEFINED STDOUT AND NOT "${STDOUT}" STREQUAL "")
+  execute_process(COMMAND ${CMD} RESULT_VARIABLE rc OUTPUT_FILE "${STDOUT}" ERROR_VARIABLE err TIMEOUT 600)
+  set(out "")
+else()
+  execute_process(COMMAND ${CMD} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
+                  TIMEOUT 600)
+endif()
 set(all "${out}${err}")
 # SOMA_CLI_SNAPSHOT=DIR: also keep each command's exit code and output in DIR/<test name>.txt, so
 # that two builds' CLI outputs can be compared byte for byte (scripts/cli_snapshot.sh).

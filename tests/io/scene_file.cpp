@@ -35,7 +35,7 @@ const BadFile kBadFiles[] = {
     {"bad_entity_key.json", "entities.p: unknown field \"xyz\" (a point has \"at\": [x, y, z])"},
     {"bad_top_key.json", ": unknown field \"output\" (a scene has entities, outputs, description)"},
     {"bad_scalar_name.json", "outputs.solve.scalar: \"quad\" is not one of"},
-    {"bad_bits.json", "outputs.solve.bits: expected an integer in [16, 100000] (mpfr's precision)"},
+    {"bad_bits.json", "outputs.solve.bits: \"3\" is outside 16 … 8192"},
     {"bad_regulus_lines.json", "entities.r.lines: expected the names of three line entities"},
     {"bad_rigid_body_key.json", "entities.b: unknown field \"masss\" (a rigid body has mass, com, inertia)"},
     {"bad_ruled_surface_missing.json", "entities.rs: missing \"screw\" (the name of an entity)"},

@@ -196,7 +196,7 @@ TEST_CASE("URDF: the text is checked before TinyXML sees it (issue 24)", "[urdf]
            R"(<child link="b"/><axis xyz=")" + xyz + R"("/></joint></robot>)";
   };
   CHECK(parseUrdf<S>(withAxis("0 0 1e0"), "t.urdf").robot.dof() == 1);
-  CHECK_THROWS_WITH(parseUrdf<S>(withAxis("0 0 nan"), "t.urdf"), "t.urdf: joint \"j\" > axis@xyz[2]: \"nan\" is not a decimal number (NaN and infinity are not numbers of a file)");
+  CHECK_THROWS_WITH(parseUrdf<S>(withAxis("0 0 nan"), "t.urdf"), "t.urdf: joint \"j\" > axis@xyz[2]: \"nan\" is not a decimal number (NaN and infinity are not numbers soma reads)");
   CHECK_THROWS_WITH(parseUrdf<S>(withAxis("0 0 1e999"), "t.urdf"), StartsWith("t.urdf: joint \"j\" > axis@xyz[2]: \"1e999\" is outside the range of double"));
   CHECK_THROWS_WITH(parseUrdf<S>(withAxis("0 1"), "t.urdf"), "t.urdf: joint \"j\" > axis@xyz: \"0 1\" has 2 numbers, 3 expected");
   CHECK_THROWS_WITH(parseUrdf<S>(R"(<robot name="r"><link name="a"><inertial><mass value="0x1"/></inertial></link></robot>)", "t.urdf"),

@@ -9,6 +9,7 @@
 #include <tbb/task_arena.h>
 
 #include <atomic>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -33,15 +34,12 @@ ParameterAxis parseParameterAxis(const std::string& spec) {
                        "' is not a DH length of a 3R arm (a1, a2, a3, d1, d2, d3)");
   a.isA = a.name[0] == 'a';
   a.row = a.name[1] - '1';
+  // std::from_chars, not std::stod: stod read "0x10" as 16 and " 1" as 1 (issue 24); from_chars
+  // takes decimal text only (then nothing else may follow), and refuses a value beyond a double.
   auto number = [&](const std::string& s, const char* what) {
-    std::size_t used = 0;
     double v = 0;
-    try {
-      v = std::stod(s, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != s.size() || s.empty() || !std::isfinite(v))
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v, std::chars_format::general);
+    if (ec != std::errc() || end != s.data() + s.size() || s.empty() || !std::isfinite(v))
       throw InvalidInput("map axis '" + spec + "': " + what + " '" + s + "' is not a finite number");
     return v;
   };

@@ -3,6 +3,7 @@
 #include "soma/geometry/parallel/stewart.hpp"
 
 #include "soma/algebra/errors.hpp"
+#include "soma/algebra/safe_norm.hpp"
 #include "soma/algebra/study_parameters.hpp"
 #include "soma/algebra/tolerance.hpp"
 
@@ -473,8 +474,7 @@ template <class S> bool realPolish(const CP<S>& P, Vec8<S>& xr) {
 }  // namespace stewart_detail
 
 template <class S> void validateStewartPlatform(const StewartPlatform<S>& P) {
-  using std::isfinite;
-  auto finite = [](const S& v) { return toDouble(v) == toDouble(v) && std::isfinite(toDouble(v)); };
+  auto finite = [](const S& v) { return isFinite(v); };  // in S: 1e400 is finite in long double
   for (int i = 0; i < 6; ++i) {
     for (int k = 0; k < 3; ++k) {
       if (!finite(P.base[i](k))) throw InvalidInput("stewart: base point " + std::to_string(i + 1) + " is not finite");
@@ -484,21 +484,31 @@ template <class S> void validateStewartPlatform(const StewartPlatform<S>& P) {
     if (!finite(P.legs[i])) throw InvalidInput("stewart: leg length " + std::to_string(i + 1) + " is not finite");
     if (P.legs[i] < S(0)) throw InvalidInput("stewart: leg length " + std::to_string(i + 1) + " is negative");
   }
+  // Spreads and lengths as norms, not squares (safeNorm): a platform of size 1e200 is the
+  // platform of size 1, not one whose squared spreads overflow to infinity.
+  using std::abs;
   S sb = S(0), sp = S(0), sl = S(0);
   for (int i = 0; i < 6; ++i) {
-    sb = std::max(sb, (P.base[i] - P.base[0]).squaredNorm());
-    sp = std::max(sp, (P.platform[i] - P.platform[0]).squaredNorm());
-    sl = std::max(sl, P.legs[i] * P.legs[i]);
+    sb = std::max(sb, safeNorm(Vec3<S>(P.base[i] - P.base[0])));
+    sp = std::max(sp, safeNorm(Vec3<S>(P.platform[i] - P.platform[0])));
+    sl = std::max(sl, abs(P.legs[i]));
   }
+  if (!isFinite(sb)) throw InvalidInput("stewart: the base points lie farther apart than " + std::string(scalarName<S>()) + " holds");
+  if (!isFinite(sp))
+    throw InvalidInput("stewart: the platform points lie farther apart than " + std::string(scalarName<S>()) + " holds");
   const S big = std::max(sb, std::max(sp, sl));
-  const S eps2 = Tolerance<S>::epsilon() * Tolerance<S>::epsilon();
-  if (!(sb > eps2 * big)) throw InvalidInput("stewart: the six base points coincide");
-  if (!(sp > eps2 * big)) throw InvalidInput("stewart: the six platform points coincide");
+  const S eps = Tolerance<S>::epsilon();
+  auto spread = [&](const S& s) {
+    return " (they lie within " + toString(s, 3) + " of each other, at the rounding level of the platform's size " +
+           toString(big, 3) + ")";
+  };
+  if (!(sb > eps * big)) throw InvalidInput("stewart: the six base points coincide" + spread(sb));
+  if (!(sp > eps * big)) throw InvalidInput("stewart: the six platform points coincide" + spread(sp));
 }
 
 template <class S> std::array<S, 6> stewartLegLengths(const StewartPlatform<S>& P, const SE3<S>& g) {
   std::array<S, 6> L;
-  for (int i = 0; i < 6; ++i) L[i] = (g.act(P.platform[i]) - P.base[i]).norm();
+  for (int i = 0; i < 6; ++i) L[i] = safeNorm(Vec3<S>(g.act(P.platform[i]) - P.base[i]));
   return L;
 }
 
@@ -510,14 +520,14 @@ template <class S> S stewartScale(const StewartPlatform<S>& P) {
   }
   pb /= S(6);
   qb /= S(6);
-  S s2 = S(0);
+  using std::abs;
+  S s = S(0);
   for (int i = 0; i < 6; ++i) {
-    s2 = std::max(s2, (P.base[i] - pb).squaredNorm());
-    s2 = std::max(s2, (P.platform[i] - qb).squaredNorm());
-    s2 = std::max(s2, P.legs[i] * P.legs[i]);
+    s = std::max(s, safeNorm(Vec3<S>(P.base[i] - pb)));
+    s = std::max(s, safeNorm(Vec3<S>(P.platform[i] - qb)));
+    s = std::max(s, abs(P.legs[i]));
   }
-  using std::sqrt;
-  return sqrt(s2);
+  return s;
 }
 
 template <class S> S stewartResidual(const StewartPlatform<S>& P, const SE3<S>& g) {
@@ -788,10 +798,10 @@ template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S
 namespace stewart_detail {
 /// True when the six points are three distinct points, each used twice (to √eps of the size).
 template <class S> bool threePairs(const std::array<Vec3<S>, 6>& x, const S& size) {
-  const S tol2 = Tolerance<S>::sqrtEpsilon() * Tolerance<S>::sqrtEpsilon() * size * size;
+  const S tol = Tolerance<S>::sqrtEpsilon() * size;
   for (int i = 0; i < 6; ++i) {
     int same = 0;
-    for (int j = 0; j < 6; ++j) same += j != i && (x[i] - x[j]).squaredNorm() <= tol2;
+    for (int j = 0; j < 6; ++j) same += j != i && safeNorm(Vec3<S>(x[i] - x[j])) <= tol;
     if (same != 1) return false;
   }
   return true;

@@ -3,6 +3,7 @@
 #include "soma/geometry/serial/serial_robot.hpp"
 
 #include "soma/algebra/errors.hpp"
+#include "soma/algebra/safe_norm.hpp"
 
 #include <cmath>
 #include <string>
@@ -107,11 +108,10 @@ SerialRobot<S> SerialRobot<S>::fromPOE(std::vector<SerialJoint<S>> joints, const
 
 template <class S> void SerialRobot<S>::computeScale() {
   using std::abs;
-  using std::sqrt;
-  S m2 = home_.translation().squaredNorm();
+  // Norms, not squared norms (safeNorm): link lengths of 1e160 square to infinity in double.
+  S m = safeNorm(home_.translation());
   for (const auto& j : joints_)
-    if (j.type == JointType::Revolute) m2 = std::max<S>(m2, j.point.squaredNorm());
-  S m = sqrt(m2);
+    if (j.type == JointType::Revolute) m = std::max<S>(m, safeNorm(j.point));
   for (const auto& d : dh_) m = std::max<S>(m, std::max<S>(abs(d.a), abs(d.d)));
   scale_ = m > S(0) ? m : S(1);
 }

@@ -37,6 +37,12 @@ TEST_CASE("parameter map: axis specifications", "[cuspidal][map]") {
   CHECK_THROWS_WITH(parseParameterAxis("b2:0:1:4"), Catch::Contains("not a DH length"));
   CHECK_THROWS_WITH(parseParameterAxis("a4:0:1:4"), Catch::Contains("not a DH length"));
   CHECK_THROWS_WITH(parseParameterAxis("a2:x:1:4"), Catch::Contains("MIN 'x'"));
+  // Decimal only (issue 24: "0x10" was 16), nothing around it, nothing beyond a double.
+  CHECK_THROWS_WITH(parseParameterAxis("a2:0:0x10:4"), Catch::Contains("MAX '0x10' is not a finite number"));
+  CHECK_THROWS_WITH(parseParameterAxis("a2: 0:1:4"), Catch::Contains("MIN ' 0' is not a finite number"));
+  CHECK_THROWS_WITH(parseParameterAxis("a2:0:1e400:4"), Catch::Contains("MAX '1e400' is not a finite number"));
+  CHECK_THROWS_WITH(parseParameterAxis("a2:0:inf:4"), Catch::Contains("MAX 'inf' is not a finite number"));
+  CHECK(parseParameterAxis("a2:-0.5:2.5e0:4").max == 2.5);
   CHECK_THROWS_WITH(parseParameterAxis("a2:0:1:1"), Catch::Contains("N must be"));
   CHECK_THROWS_WITH(parseParameterAxis("a2:0:1:2.5"), Catch::Contains("N must be"));
   CHECK_THROWS_WITH(parseParameterAxis("a2:1:0:4"), Catch::Contains("MAX must exceed MIN"));

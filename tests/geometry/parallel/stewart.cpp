@@ -146,13 +146,15 @@ TEMPLATE_TEST_CASE("Stewart forward kinematics in every scalar", "[stewart]", fl
   setMpfrBits(bits);
 }
 
-TEST_CASE("Stewart forward kinematics is scale-free: lengths ×1e-8 and ×1e8", "[stewart]") {
+// ×1e±200 (issue 24): the squared spreads overflow or underflow double; the validation and the
+// scale are norms (safeNorm), so the platform is the same problem at every size.
+TEST_CASE("Stewart forward kinematics is scale-free: lengths ×1e-8, ×1e8, ×1e-200 and ×1e200", "[stewart][hostile]") {
   auto& g = test::rng(5);
   SE3<double> pose;
   const auto P = randomPlatform<double>(g, &pose);
   const auto ref = solveStewartForward<double>(P);
   REQUIRE(ref.complexCount() == 40);
-  for (double k : {1e-8, 1e8}) {
+  for (double k : {1e-8, 1e8, 1e-200, 1e200}) {
     StewartPlatform<double> Q = P;
     for (int i = 0; i < 6; ++i) {
       Q.base[i] *= k;
@@ -201,6 +203,18 @@ TEST_CASE("Stewart platform validation names the defect", "[stewart]") {
   Q = P;
   for (auto& q : Q.platform) q = P.platform[0];
   CHECK_THROWS_WITH(solveStewartForward<double>(Q), Catch::Contains("platform points coincide"));
+  // A base point 1e200 away (issue 24: the squared spread overflowed, and the message blamed the
+  // base): against a base that wide the platform is one point, and the message says so.
+  Q = P;
+  Q.base[0] = Vec3<double>(1e200, 0, 0);
+  CHECK_THROWS_WITH(solveStewartForward<double>(Q), Catch::Contains("platform points coincide (they lie within ") &&
+                                                        Catch::Contains("of the platform's size 1e+200)"));
+  CHECK_THROWS_WITH(solveStewartForward<double>(Q), !Catch::Contains("base points coincide"));
+  // Base points farther apart than double holds (1e308 and −1e308): said so, not "coincide".
+  Q = P;
+  Q.base[0] = Vec3<double>(1e308, 0, 0);
+  Q.base[1] = Vec3<double>(-1e308, 0, 0);
+  CHECK_THROWS_WITH(solveStewartForward<double>(Q), Catch::Contains("base points lie farther apart than double holds"));
 }
 
 TEST_CASE("Stewart 6-3 platform: 16 postures, the other 24 paths end at singular points", "[stewart]") {

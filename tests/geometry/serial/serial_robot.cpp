@@ -158,12 +158,17 @@ TEST_CASE("serial: bad robots are rejected with the joint and the defect", "[ser
   CHECK_THROWS_AS(SerialRobot<S>::fromPOE(js, SE3<S>()), InvalidInput);
 }
 
-TEST_CASE("serial: lengths 1e-8 and 1e8 scale the pose exactly", "[serial][fk][extreme]") {
+// Issue 24: at 1e160 the squared lengths overflow double; the length scale is a norm (safeNorm), so
+// the robot is the same robot, of rank 6, at every scale its lengths can be written in.
+TEST_CASE("serial: lengths 1e-8 … 1e160 scale the pose exactly and keep the rank", "[serial][fk][extreme][hostile]") {
   auto& g = rng(14);
   const auto rows = randomDH<double>(g, 6, false);
   const JointVector<double> q = randomQ<double>(g, 6);
-  const SE3<double> t1 = SerialRobot<double>::fromDH(rows).fk(q);
-  for (double s : {1e-8, 1e8}) {
+  const auto unit = SerialRobot<double>::fromDH(rows);
+  const SE3<double> t1 = unit.fk(q);
+  const auto m1 = singularityMeasures(unit, q);
+  REQUIRE(m1.rank == 6);
+  for (double s : {1e-8, 1e8, 1e-160, 1e160, 1e300}) {
     auto scaled = rows;
     for (auto& r : scaled) {
       r.a *= s;
@@ -175,6 +180,10 @@ TEST_CASE("serial: lengths 1e-8 and 1e8 scale the pose exactly", "[serial][fk][e
     CHECK((ts.translation() / s - t1.translation()).norm() <= Tolerance<double>::identity(64));
     CHECK(robot.lengthScale() / s > 0.1);
     CHECK(robot.lengthScale() / s < 10);
+    INFO("lengths ×" << s);
+    const auto ms = singularityMeasures(robot, q);
+    CHECK(ms.rank == 6);
+    CHECK(std::abs(ms.condition - m1.condition) <= 1e-10 * m1.condition);
   }
 }
 
