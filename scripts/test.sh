@@ -13,7 +13,8 @@ echo "soma benchmarks: compiled in $(( $(date +%s) - tests_done )) s"
 
 # Sanitizers and fuzzing (issue 24, tests/fuzz/README.md): the `fuzz` build (build/fuzz: clang 14,
 # ASan + UBSan, a report aborts; -O1 -gline-tables-only, the other four scalars at -O0, the general-6R,
-# closed-form IK and dynamics instantiations for double only) of the readers' libraries, the seven
+# closed-form IK and dynamics instantiations for double only; spatial inertia, which the scene
+# reader's rigid bodies build in every scalar, in all five) of the readers' libraries, the seven
 # libFuzzer harnesses and the sanitized unit tests (SOMA_SANITIZE_TESTS, CTest regex areas); CTest replays every
 # harness's corpus and runs those tests (0 reports), then scripts/fuzz.sh fuzzes each harness for
 # SOMA_FUZZ_SECONDS (default 20, two at a time). SOMA_SANITIZE=0 skips the phase (e.g. locally).
