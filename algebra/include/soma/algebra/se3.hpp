@@ -132,6 +132,14 @@ template <class S> class SE3 {
   }
 
  private:
+  struct Unchecked {};
+  // For results of maps of valid elements (finite in, finite out): no allFinite test.
+  SE3(const SO3<S>& r, const Vec3<S>& t, Unchecked) : r_(r), t_(t) {}
+  friend class SE3Tangent<S>;
+  // Jacobian outputs of compose and act, out of line (see so3.hpp).
+  void composeJacobians(const SE3& b, Mat6<S>* J_out_self, Mat6<S>* J_out_b) const;
+  void actJacobians(const Vec3<S>& p, Eigen::Matrix<S, 3, 6>* J_out_self, Mat3<S>* J_out_p) const;
+
   SO3<S> r_;
   Vec3<S> t_;
 };
@@ -185,12 +193,31 @@ template <class S> Mat4<S> SE3Tangent<S>::hat() const {
   return m;
 }
 
-template <class S> SE3<S> SE3Tangent<S>::exp(Mat6<S>* J_out) const {
+// exp, log, compose, act, inverse are inline and matrix-free (see so3.hpp): the rotation stays a
+// quaternion, V(ω)v and V(ω)⁻¹t are written with two cross products each, and exp reuses the
+// sin/cos of θ/2 it needs for the quaternion for the coefficients of V.
+template <class S> inline SE3<S> SE3Tangent<S>::exp(Mat6<S>* J_out) const {
   if (!allFinite(s_))
     throw InvalidInput("se(3) exp: twist (ω, v) has a NaN or infinite component");
-  const SO3Tangent<S> w(ang());
+  const Vec3<S> w = ang(), v = lin();
+  const S theta2 = w.squaredNorm();
+  const auto h = detail::so3HalfAngle(theta2);
+  // t = Jl(ω) v = v + B ω×v + C ω×(ω×v), B = (1−cos θ)/θ² = 2 sin²(θ/2)/θ², C = (θ−sin θ)/θ³
+  // (Horner series for θ ≤ 1, sin θ = 2 sin(θ/2) cos(θ/2) above).
+  S B, C;
+  if (theta2 < detail::taylorSwitch2<S>(3)) {
+    B = S(1) / S(2) - theta2 / S(24);
+    C = S(1) / S(6) - theta2 / S(120);
+  } else {
+    B = S(2) * h.sh * h.sh / theta2;
+    C = theta2 <= S(1) ? detail::thetaMinusSinOverCube(theta2)
+                       : (h.theta - S(2) * h.sh * h.w) / (theta2 * h.theta);
+  }
+  const Vec3<S> wv = w.cross(v);
+  const Vec3<S> t = v + B * wv + C * w.cross(wv);
   if (J_out) *J_out = rjac();
-  return SE3<S>(w.exp(), w.ljac() * lin());
+  return SE3<S>(SO3<S>::fromUnitQuaternion(Quat<S>(h.w, h.k * w.x(), h.k * w.y(), h.k * w.z())),
+                t, typename SE3<S>::Unchecked{});
 }
 
 template <class S> Mat6<S> SE3Tangent<S>::ljac() const {
@@ -242,28 +269,38 @@ template <class S> Mat4<S> SE3<S>::matrix() const {
   return m;
 }
 
-template <class S> SE3<S> SE3<S>::inverse(Mat6<S>* J_out) const {
+template <class S> SOMA_ALWAYS_INLINE SE3<S> SE3<S>::inverse(Mat6<S>* J_out) const {
   if (J_out) *J_out = -adjoint();
   const SO3<S> ri = r_.inverse();
-  return SE3(ri, -ri.act(t_));
+  return SE3(ri, -ri.act(t_), Unchecked{});
 }
 
 template <class S>
-SE3<S> SE3<S>::compose(const SE3& b, Mat6<S>* J_out_self, Mat6<S>* J_out_b) const {
+void SE3<S>::composeJacobians(const SE3& b, Mat6<S>* J_out_self, Mat6<S>* J_out_b) const {
   if (J_out_self) *J_out_self = b.inverse().adjoint();
   if (J_out_b) *J_out_b = Mat6<S>::Identity();
-  return SE3(r_.compose(b.r_), r_.act(b.t_) + t_);
+}
+template <class S>
+SOMA_ALWAYS_INLINE SE3<S> SE3<S>::compose(const SE3& b, Mat6<S>* J_out_self, Mat6<S>* J_out_b) const {
+  if (J_out_self || J_out_b) composeJacobians(b, J_out_self, J_out_b);
+  return SE3(r_.compose(b.r_), r_.act(b.t_) + t_, Unchecked{});
 }
 
 template <class S>
-Vec3<S> SE3<S>::act(const Vec3<S>& p, Eigen::Matrix<S, 3, 6>* J_out_self, Mat3<S>* J_out_p) const {
+void SE3<S>::actJacobians(const Vec3<S>& p, Eigen::Matrix<S, 3, 6>* J_out_self,
+                          Mat3<S>* J_out_p) const {
   const Mat3<S> r = r_.matrix();
   if (J_out_self) {
     J_out_self->template leftCols<3>() = -r * skew(p);
     J_out_self->template rightCols<3>() = r;
   }
   if (J_out_p) *J_out_p = r;
-  return r * p + t_;
+}
+template <class S>
+SOMA_ALWAYS_INLINE Vec3<S> SE3<S>::act(const Vec3<S>& p, Eigen::Matrix<S, 3, 6>* J_out_self,
+                           Mat3<S>* J_out_p) const {
+  if (J_out_self || J_out_p) actJacobians(p, J_out_self, J_out_p);
+  return r_.act(p) + t_;
 }
 
 template <class S> Mat6<S> SE3<S>::adjoint() const {
@@ -273,9 +310,30 @@ template <class S> Mat6<S> SE3<S>::adjoint() const {
   return m;
 }
 
-template <class S> SE3Tangent<S> SE3<S>::log(Mat6<S>* J_out) const {
-  const SO3Tangent<S> w = r_.log();
-  const Tangent s(w.coeffs(), w.ljacinv() * t_);
+template <class S> inline SE3Tangent<S> SE3<S>::log(Mat6<S>* J_out) const {
+  using std::atan2;
+  using std::sqrt;
+  // ω as in SO3::log (θ = 2 atan2(|v|, w), w ≥ 0); then v = Jl(ω)⁻¹ t = t − ½ ω×t + D ω×(ω×t)
+  // with D = 1/θ² − cot(θ/2)/(2θ), where cot(θ/2) = w/|v| is read off the quaternion (no trig).
+  const Quat<S>& q = r_.quaternion();
+  const S sign = q.w() < S(0) ? S(-1) : S(1);
+  const S qw = sign * q.w();
+  const Vec3<S> qv = sign * q.vec();
+  const S n2 = qv.squaredNorm();
+  S k, D;  // k = θ/|v|
+  if (n2 < detail::taylorSwitch2<S>(3)) {
+    // k as in SO3::log; D = 1/12 + θ²/720 (remainder θ⁴/30240 with θ² < 4·precision(3)²)
+    k = S(2) / qw * (S(1) - n2 / (S(3) * qw * qw));
+    D = S(1) / S(12) + k * k * n2 / S(720);
+  } else {
+    const S n = sqrt(n2);
+    const S theta = S(2) * atan2(n, qw);
+    k = theta / n;
+    D = S(1) / (theta * theta) - qw / (S(2) * theta * n);
+  }
+  const Vec3<S> w = k * qv;
+  const Vec3<S> wt = w.cross(t_);
+  const Tangent s(w, t_ - wt / S(2) + D * w.cross(wt));
   if (J_out) *J_out = s.rjacinv();
   return s;
 }

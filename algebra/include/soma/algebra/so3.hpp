@@ -12,6 +12,14 @@
 #include <random>
 #include <string>
 
+// The few-line helpers of the inline maps below: GCC's heuristics sometimes keep them out of
+// line once a translation unit calls them from several places, which costs more than they do.
+#if defined(__GNUC__)
+#define SOMA_ALWAYS_INLINE [[gnu::always_inline]] inline
+#else
+#define SOMA_ALWAYS_INLINE inline
+#endif
+
 namespace soma {
 
 
@@ -151,8 +159,32 @@ template <class S> class SO3 {
     r.q_.coeffs() /= q.coeffs().norm();
     return r;
   }
+  /// No validation, no normalisation: q must be unit to a few ulps (exp's cos/sin pair, a
+  /// conjugate). The hot paths use it to skip the sqrt and four divisions.
+  static SO3 fromUnitQuaternion(const Quat<S>& q) {
+    SO3 r;
+    r.q_ = q;
+    return r;
+  }
+  /// Product of two unit quaternions, renormalised by one Newton step for 1/√n², n²=|q|²:
+  /// q·(3 − n²)/2. The product's |n² − 1| is a few ulps, so the step leaves a defect of
+  /// (3/4)(n² − 1)² (far below an ulp) at the cost of 5 multiplies, no sqrt or division.
+  static SO3 fromUnitProduct(const Quat<S>& q) {
+    // Written per component: a packed squaredNorm over the four scalars just computed makes
+    // GCC store them and reload them as pairs (a store-forwarding stall, ~2× the whole compose).
+    const S n2 = q.w() * q.w() + q.x() * q.x() + q.y() * q.y() + q.z() * q.z();
+    const S k = (S(3) - n2) / S(2);
+    SO3 r;
+    r.q_ = Quat<S>(k * q.w(), k * q.x(), k * q.y(), k * q.z());
+    return r;
+  }
 
  private:
+  // The Jacobian outputs of compose and act, out of line (compiled once per scalar in
+  // algebra/src) so that the inline maps stay small enough to be inlined.
+  void composeJacobians(const SO3& b, Mat3<S>* J_out_self, Mat3<S>* J_out_b) const;
+  void actJacobians(const Vec3<S>& p, Mat3<S>* J_out_self, Mat3<S>* J_out_p) const;
+
   Quat<S> q_;
 };
 
@@ -172,7 +204,7 @@ template <class S> void so3JacobianCoefficients(const S& theta2, S& B, S& C) {
   const S theta = sqrt(theta2);
   const S s = sin(theta / S(2));
   B = S(2) * s * s / theta2;  // 1 − cos θ = 2 sin²(θ/2): no cancellation
-  C = thetaMinusSin(theta) / (theta2 * theta);
+  C = theta2 <= S(1) ? thetaMinusSinOverCube(theta2) : thetaMinusSin(theta) / (theta2 * theta);
 }
 /// D = 1/θ² − cot(θ/2)/(2θ) = 1/θ² − (1+cos θ)/(2θ sin θ) of Jl⁻¹, Jr⁻¹ (Taylor below
 /// precision(3)).
@@ -191,19 +223,49 @@ template <class S> S SO3Tangent<S>::angle() const {
   return sqrt(w_.squaredNorm());
 }
 
-template <class S> SO3<S> SO3Tangent<S>::exp(Mat3<S>* J_out) const {
+namespace detail {
+/// The half-angle quaternion of exp(ω): w = cos(θ/2), k = sin(θ/2)/θ (q = (w, kω)), and
+/// sh = sin(θ/2), for θ² = |ω|². Taylor for k below precision(3) (remainder θ⁴/3840 < eps).
+template <class S> struct So3HalfAngle {
+  S theta, w, k, sh;
+};
+template <class S> SOMA_ALWAYS_INLINE So3HalfAngle<S> so3HalfAngle(const S& theta2) {
   using std::cos;
   using std::sin;
   using std::sqrt;
+  So3HalfAngle<S> h;
+  h.theta = sqrt(theta2);
+  const S half = h.theta / S(2);
+  h.sh = sin(half);  // sin and cos of one argument: GCC emits one sincos call
+  h.w = cos(half);
+  h.k = theta2 < taylorSwitch2<S>(3) ? S(1) / S(2) - theta2 / S(48) : h.sh / h.theta;
+  return h;
+}
+/// Unit quaternion q = (w, v) rotating p: p + w u + v × u with u = 2 v × p (15 multiplies, no
+/// 3×3 matrix, no division). For |q| = 1 it is R(q) p.
+template <class S> SOMA_ALWAYS_INLINE Vec3<S> rotateByUnitQuaternion(const Quat<S>& q, const Vec3<S>& p) {
+  // Scalars, not Eigen's cross(): in a large translation unit GCC may leave Eigen's cross out
+  // of line (a call and a round trip through memory for every product).
+  const S ux = S(2) * (q.y() * p.z() - q.z() * p.y());
+  const S uy = S(2) * (q.z() * p.x() - q.x() * p.z());
+  const S uz = S(2) * (q.x() * p.y() - q.y() * p.x());
+  return Vec3<S>(p.x() + q.w() * ux + (q.y() * uz - q.z() * uy),
+                 p.y() + q.w() * uy + (q.z() * ux - q.x() * uz),
+                 p.z() + q.w() * uz + (q.x() * uy - q.y() * ux));
+}
+}  // namespace detail
+
+// exp, log, compose, act and inverse are `inline` (the rest of the class is compiled once per
+// scalar in algebra/src): an explicit instantiation declaration does not stop the compiler from
+// inlining inline members, so a caller's tight loop sees these few-nanosecond maps whole
+// (Sophus's are header-only), and the J_out == nullptr branches fold away.
+template <class S> inline SO3<S> SO3Tangent<S>::exp(Mat3<S>* J_out) const {
   if (!allFinite(w_)) throw InvalidInput("so(3) exp: tangent ω has a NaN or infinite component");
-  const S theta2 = w_.squaredNorm();
-  const S theta = sqrt(theta2);
-  // sin(θ/2)/θ: Taylor 1/2 − θ²/48 below precision(3) (remainder θ⁴/3840 < eps).
-  const S k = theta2 < detail::taylorSwitch2<S>(3) ? S(1) / S(2) - theta2 / S(48)
-                                                   : sin(theta / S(2)) / theta;
-  const Quat<S> q(cos(theta / S(2)), k * w_.x(), k * w_.y(), k * w_.z());
+  const auto h = detail::so3HalfAngle(w_.squaredNorm());
+  const Quat<S> q(h.w, h.k * w_.x(), h.k * w_.y(), h.k * w_.z());
   if (J_out) *J_out = rjac();
-  return SO3<S>::fromQuaternionUnchecked(q);
+  // cos²(θ/2) + k²θ² = 1 to a few ulps: no renormalisation (its sqrt and 4 divisions).
+  return SO3<S>::fromUnitQuaternion(q);
 }
 
 template <class S> Mat3<S> SO3Tangent<S>::rjac() const {
@@ -276,27 +338,38 @@ template <class S> SO3<S> SO3<S>::Random(std::mt19937_64& g) {
   return fromQuaternionUnchecked(q);
 }
 
-template <class S> SO3<S> SO3<S>::inverse(Mat3<S>* J_out) const {
+template <class S> SOMA_ALWAYS_INLINE SO3<S> SO3<S>::inverse(Mat3<S>* J_out) const {
   if (J_out) *J_out = -matrix();
-  return fromQuaternionUnchecked(q_.conjugate());
+  return fromUnitQuaternion(q_.conjugate());  // the conjugate of a unit quaternion is unit
 }
 
 template <class S>
-SO3<S> SO3<S>::compose(const SO3& b, Mat3<S>* J_out_self, Mat3<S>* J_out_b) const {
+void SO3<S>::composeJacobians(const SO3& b, Mat3<S>* J_out_self, Mat3<S>* J_out_b) const {
   if (J_out_self) *J_out_self = b.matrix().transpose();
   if (J_out_b) *J_out_b = Mat3<S>::Identity();
-  return fromQuaternionUnchecked(quaternionProduct(q_, b.q_));
+}
+template <class S>
+SOMA_ALWAYS_INLINE SO3<S> SO3<S>::compose(const SO3& b, Mat3<S>* J_out_self, Mat3<S>* J_out_b) const {
+  if (J_out_self || J_out_b) composeJacobians(b, J_out_self, J_out_b);
+  if constexpr (std::is_same_v<S, float> || std::is_same_v<S, double>)
+    return fromUnitProduct(q_ * b.q_);  // Eigen's SSE kernel for the same Hamilton product
+  else
+    return fromUnitProduct(quaternionProduct(q_, b.q_));
 }
 
 template <class S>
-Vec3<S> SO3<S>::act(const Vec3<S>& p, Mat3<S>* J_out_self, Mat3<S>* J_out_p) const {
+void SO3<S>::actJacobians(const Vec3<S>& p, Mat3<S>* J_out_self, Mat3<S>* J_out_p) const {
   const Mat3<S> r = matrix();
   if (J_out_self) *J_out_self = -r * skew(p);
   if (J_out_p) *J_out_p = r;
-  return r * p;
+}
+template <class S>
+SOMA_ALWAYS_INLINE Vec3<S> SO3<S>::act(const Vec3<S>& p, Mat3<S>* J_out_self, Mat3<S>* J_out_p) const {
+  if (J_out_self || J_out_p) actJacobians(p, J_out_self, J_out_p);
+  return detail::rotateByUnitQuaternion(q_, p);
 }
 
-template <class S> SO3Tangent<S> SO3<S>::log(Mat3<S>* J_out) const {
+template <class S> inline SO3Tangent<S> SO3<S>::log(Mat3<S>* J_out) const {
   using std::atan2;
   using std::sqrt;
   const S sign = q_.w() < S(0) ? S(-1) : S(1);  // w ≥ 0: θ ∈ [0, π]
