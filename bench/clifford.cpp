@@ -10,6 +10,9 @@
 //                   form R x + t) | hand-written: two 8-double products with the full conjugate
 //   motor.line      a line / twist L (bivector) moved by M L M̃ — generic Even × Bivector then
 //                   × Even, projected on grade 2 | DualQuaternion::adjoint | two hand products
+//   motor.* float   the SIMD float motor (clifford/motor_simd.hpp: SSE2 closed forms) beside the
+//                   generic Even<PGA, float> product it is tested against (tests/algebra/
+//                   motor_simd.cpp); the float rows are checked against the double generic rows.
 //   cl062.*         Cl(0,6,2) (SB): Even × Even (128 × 128 coefficients) and Dense × Dense
 //                   (256 × 256), double; both use the blocked kernel of multivector.hpp.
 //
@@ -17,6 +20,7 @@
 // rows against the dual quaternions through the book's isomorphism (GF §9.3: e2e3 ↦ i,
 // e3e1 ↦ j, e1e2 ↦ k, −e1e2e3𝐞 ↦ ε), the Cl(0,6,2) products against the 256 × 256 left-
 // multiplication matrix applied to the dense right operand. Nothing is timed if a check fails.
+#include "soma/algebra/clifford/motor_simd.hpp"
 #include "soma/algebra/clifford/multivector.hpp"
 #include "soma/algebra/dual_quaternion.hpp"
 
@@ -54,8 +58,8 @@ std::pair<Vec4<double>, Vec4<double>> fromMotor(const Motor& m) {
           Vec4<double>(-m.coeff(kI), m.coeff(kE1n), m.coeff(kE2n), m.coeff(kE3n))};
 }
 /// M† = Clifford conjugate of M with 𝐞 ↦ −𝐞 (the right factor of the point action, GF §9.2).
-Motor dagger(const Motor& m) {
-  Motor d = m.conjugate();
+template <class M> M dagger(const M& m) {
+  M d = m.conjugate();
   for (int i = 0; i < d.size; ++i)
     if (d.blade(i) & 0b1000) d[i] = -d[i];
   return d;
@@ -100,6 +104,10 @@ struct Pools {
   std::vector<Line> ml;
   std::vector<Vec3<double>> x;
   std::vector<SE3Tangent<double>> xi;
+  std::vector<MotorF> fa, fb;
+  std::vector<MotorF::Generic> ga8, gb8, gpt8;
+  std::vector<PointF> fpt;
+  std::vector<LineF> fl;
   std::vector<Even<CL, double>> ea, eb;
   std::vector<Dense<CL, double>> ga, gb;
 };
@@ -142,6 +150,19 @@ const Pools& pools() {
       l.setCoeff(kE3n, v(2) / 2);
       p.ml.push_back(l);
       p.dline.push_back(DQ8{0, w(0) / 2, w(1) / 2, w(2) / 2, 0, v(0) / 2, v(1) / 2, v(2) / 2});
+      auto toFloat = [](const Motor& m) {
+        MotorF::Generic f;
+        for (int k = 0; k < f.size; ++k) f[k] = float(m[k]);
+        return f;
+      };
+      p.ga8.push_back(toFloat(p.ma.back()));
+      p.gb8.push_back(toFloat(p.mb.back()));
+      p.gpt8.push_back(toFloat(pt));
+      p.fa.push_back(MotorF::fromGeneric(p.ga8.back()));
+      p.fb.push_back(MotorF::fromGeneric(p.gb8.back()));
+      p.fpt.push_back(PointF::make(float(d.p[i](0)), float(d.p[i](1)), float(d.p[i](2))));
+      p.fl.push_back(LineF{simd::load(0, float(w(0) / 2), float(w(1) / 2), float(w(2) / 2)),
+                           simd::load(0, float(v(0) / 2), float(v(1) / 2), float(v(2) / 2))});
       if (i < 16) {  // Cl(0,6,2) pools (smaller: 2 KB per dense element)
         Even<CL, double> e1, e2;
         Dense<CL, double> g1, g2;
@@ -198,6 +219,28 @@ void checkAll(Checker& c) {
     c.expect("motor.line hand vs DualQuaternion::adjoint", i, (hlv - ad).cwiseAbs().maxCoeff(),
              tol * (1 + ad.cwiseAbs().maxCoeff()));
   }
+  // the float SIMD motor against the double generic rows (float tolerance: 64 eps of float)
+  const double tolf = 64 * double(std::numeric_limits<float>::epsilon());
+  for (std::size_t i = 0; i < kPool; ++i) {
+    const Motor want = Motor(p.ma[i] * p.mb[i]);
+    const MotorF::Generic got = (p.fa[i] * p.fb[i]).toGeneric();
+    double err = 0, sz = 0;
+    for (int k = 0; k < want.size; ++k)
+      err = std::max(err, std::abs(double(got[k]) - want[k])), sz = std::max(sz, std::abs(want[k]));
+    c.expect("motor.compose SIMD float vs Cl(0,3,1) double", i, err, tolf * (1 + sz));
+    const Vec3<double> y = p.ha[i].act(p.x[i]);
+    const PointF q = p.fa[i](p.fpt[i]);
+    c.expect("motor.point SIMD float vs DualQuaternion::act", i,
+             (Vec3<double>(q.x(), q.y(), q.z()) - y).cwiseAbs().maxCoeff(),
+             tolf * (1 + y.cwiseAbs().maxCoeff()));
+    const Vec6<double> ad = p.ha[i].adjoint(p.xi[i]).coeffs();
+    const LineF l = p.fa[i](p.fl[i]);
+    Vec6<double> lv;
+    lv << 2 * simd::lane(l.d, 1), 2 * simd::lane(l.d, 2), 2 * simd::lane(l.d, 3),
+        2 * simd::lane(l.m, 1), 2 * simd::lane(l.m, 2), 2 * simd::lane(l.m, 3);
+    c.expect("motor.line SIMD float vs DualQuaternion::adjoint", i, (lv - ad).cwiseAbs().maxCoeff(),
+             tolf * (1 + ad.cwiseAbs().maxCoeff()));
+  }
   // Cl(0,6,2): the blocked kernel against the left-multiplication matrix (independent loop
   // over productSign) applied to the dense right operand.
   for (std::size_t i = 0; i < p.ea.size(); ++i) {
@@ -244,6 +287,18 @@ void registerAll() {
        [&p](std::size_t i) { return p.ha[i].adjoint(p.xi[i]); });
   regB("motor.line/hand8/double", "h l h*, two hand products",
        [&p](std::size_t i) { return mul(mul(p.da[i], p.dline[i]), conj(p.da[i])); });
+  regB("motor.compose/SIMD/float", "MotorF * MotorF, SSE2 (three Hamilton products)",
+       [&p](std::size_t i) { return p.fa[i] * p.fb[i]; });
+  regB("motor.compose/Cl031-Even/float", "M1 * M2, Even x Even (48 terms), float",
+       [&p](std::size_t i) { return MotorF::Generic(p.ga8[i] * p.gb8[i]); });
+  regB("motor.point/SIMD/float", "MotorF(point): closed form, two cross products",
+       [&p](std::size_t i) { return p.fa[i](p.fpt[i]); });
+  regB("motor.point/Cl031-Even/float", "M (1 + x e) M-dagger, two Even x Even, float",
+       [&p](std::size_t i) {
+         return MotorF::Generic(MotorF::Generic(p.ga8[i] * p.gpt8[i]) * dagger(p.ga8[i]));
+       });
+  regB("motor.line/SIMD/float", "MotorF(line): (R l, R m + t x R l)",
+       [&p](std::size_t i) { return p.fa[i](p.fl[i]); });
   regB("cl062.even*even/Cl062/double", "Even x Even, 128 x 128 coefficients",
        [&p](std::size_t i) { return p.ea[i & 15] * p.eb[i & 15]; });
   regB("cl062.dense*dense/Cl062/double", "Dense x Dense, 256 x 256 coefficients",

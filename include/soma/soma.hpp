@@ -6,6 +6,7 @@
 #include <soma/algebra/scalar.hpp>
 
 // algebra
+#include <soma/algebra/clifford/motor_simd.hpp>
 #include <soma/algebra/clifford/multivector.hpp>
 #include <soma/algebra/clifford/quadratic_form.hpp>
 #include <soma/algebra/clifford/signature.hpp>

@@ -207,3 +207,5 @@ class MotorF {
 };
 
 }  // namespace soma::clifford
+
+#undef SOMA_SHUF  // used only by the inline definitions above
