@@ -22,6 +22,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <fstream>
 #include <map>
 #include <mutex>
@@ -84,8 +85,9 @@ int openAt(const fs::path& f, std::size_t keep) {
 }
 
 // The rows folder: sweep.json says which sweep its rows belong to; the complete rows of points
-// 0, 1, ... k−1 in both files are kept, anything after them (a partial line) is cut. Returns k.
-std::size_t prepare(const io::SweepFile& s, const fs::path& out, RowFiles& f) {
+// 0, 1, ... k−1 in both files are kept, anything after them (a partial line) is cut. Returns k;
+// `notOk` counts the kept rows whose status is not "ok".
+std::size_t prepare(const io::SweepFile& s, const fs::path& out, RowFiles& f, std::size_t& notOk) {
   std::error_code ec;
   fs::create_directories(out, ec);
   if (ec || !fs::is_directory(out)) throw InvalidInput("--out " + out.string() + ": cannot create the folder (" + ec.message() + ")");
@@ -110,11 +112,13 @@ std::size_t prepare(const io::SweepFile& s, const fs::path& out, RowFiles& f) {
   // JSON Lines: the end offset of each complete row, in point order.
   const std::string jl = fileText(f.jsonlPath);
   std::vector<std::size_t> jEnd{0};
+  std::vector<bool> jOk;
   for (std::size_t pos = 0;;) {
     const std::size_t nl = jl.find('\n', pos);
     if (nl == std::string::npos) break;
     const auto p = io::sweepJsonLinePoint(jl.substr(pos, nl + 1 - pos));
     if (!p || *p != jEnd.size() - 1 || *p >= s.points()) break;
+    jOk.push_back(jl.substr(pos, nl + 1 - pos).find("\"status\":\"ok\"") != std::string::npos);
     pos = nl + 1;
     jEnd.push_back(pos);
   }
@@ -133,6 +137,7 @@ std::size_t prepare(const io::SweepFile& s, const fs::path& out, RowFiles& f) {
     }
   }
   const std::size_t k = cEnd.empty() ? 0 : std::min(jEnd.size(), cEnd.size()) - 1;
+  notOk = std::size_t(std::count(jOk.begin(), jOk.begin() + std::ptrdiff_t(k), false));
   f.jsonl = openAt(f.jsonlPath, jEnd[k]);
   f.csv = openAt(f.csvPath, cEnd.empty() ? 0 : cEnd[k]);
   if (cEnd.empty()) writeAll(f.csv, header, f.csvPath);
@@ -227,7 +232,8 @@ SweepSummary runLocal(const io::SweepFile& s, const SweepOptions& o) {
   RowFiles files;
   SweepSummary sum;
   sum.points = s.points();
-  sum.skipped = prepare(s, o.out, files);
+  std::size_t keptNotOk = 0;
+  sum.skipped = prepare(s, o.out, files, keptNotOk);
   sum.csv = files.csvPath;
   sum.jsonl = files.jsonlPath;
   sum.threads = concurrency(o.threads);
@@ -238,7 +244,7 @@ SweepSummary runLocal(const io::SweepFile& s, const SweepOptions& o) {
   });
   w.finish();
   sum.computed = w.written();
-  sum.failed = w.failed();
+  sum.failed = keptNotOk + w.failed();
   sum.seconds = since(t0);
   return sum;
 }
@@ -290,9 +296,10 @@ SweepSummary runMpi(const io::SweepFile& s, const SweepOptions& o, int rank, int
   RowFiles files;
   std::string error;
   unsigned long long first = 0;
+  std::size_t keptNotOk = 0;
   if (rank == 0) {
     try {
-      first = prepare(s, o.out, files);
+      first = prepare(s, o.out, files, keptNotOk);
     } catch (const std::exception& e) {
       error = e.what();
     }
@@ -337,10 +344,15 @@ SweepSummary runMpi(const io::SweepFile& s, const SweepOptions& o, int rank, int
   // Rank 0: hands out chunks from the same counter its own threads take points from, writes.
   Writer w(files, sum.skipped, sum.points, o);
   std::atomic<std::size_t> next{sum.skipped};
+  std::exception_ptr localError;  // a row that cannot be written: rethrown once the workers stopped
   std::thread local([&] {
-    computePoints(s, next, sum.points, o.threads, [&](io::SweepRow&& r) {
-      w.add(r.point, io::sweepJsonLine(s, r), io::sweepCsvLine(s, r), r.status == "ok");
-    });
+    try {
+      computePoints(s, next, sum.points, o.threads, [&](io::SweepRow&& r) {
+        w.add(r.point, io::sweepJsonLine(s, r), io::sweepCsvLine(s, r), r.status == "ok");
+      });
+    } catch (...) {
+      localError = std::current_exception();
+    }
   });
   int active = size - 1;
   while (active > 0) {
@@ -367,9 +379,10 @@ SweepSummary runMpi(const io::SweepFile& s, const SweepOptions& o, int rank, int
     MPI_Send(range, 2, MPI_UNSIGNED_LONG_LONG, from, kWork, MPI_COMM_WORLD);
   }
   local.join();
+  if (localError) std::rethrow_exception(localError);
   w.finish();
   sum.computed = w.written();
-  sum.failed = w.failed();
+  sum.failed = keptNotOk + w.failed();
   sum.seconds = since(t0);
   return sum;
 }

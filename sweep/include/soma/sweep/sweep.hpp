@@ -31,7 +31,7 @@ struct SweepSummary {
   std::size_t points = 0;    ///< the sweep's points
   std::size_t skipped = 0;   ///< already written by an earlier run (resume)
   std::size_t computed = 0;  ///< computed by this run
-  std::size_t failed = 0;    ///< rows of this run whose status is not "ok"
+  std::size_t failed = 0;    ///< rows whose status is not "ok" (those kept from an earlier run too)
   int ranks = 1;             ///< MPI processes (1 without mpirun)
   int threads = 1;           ///< TBB threads of this process
   double seconds = 0;        ///< wall time of this run
