@@ -183,7 +183,9 @@ class Writer {
     const double t = since(t0_);
     const std::size_t done = next_ - first_, total = end_ - first_;
     const double rate = t > 0 ? double(done) / t : 0;
-    std::string left = rate > 0 ? std::to_string(long(std::ceil(double(total - done) / rate))) + " s left" : "time left unknown";
+    const std::string left = done == total ? "0 s left"
+                             : rate > 0    ? std::to_string(long(std::ceil(double(total - done) / rate))) + " s left"
+                                           : "time left unknown";
     char pct[16];
     std::snprintf(pct, sizeof pct, "%.1f", total ? 100.0 * double(done) / double(total) : 100.0);
     char r[32];
