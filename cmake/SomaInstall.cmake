@@ -49,6 +49,7 @@ soma_package_dependency(TBB::tbb FIND "find_dependency(TBB)" PC tbb)
 soma_package_dependency(fmt::fmt FIND "find_dependency(fmt)" PC fmt)
 soma_package_dependency(nlohmann_json::nlohmann_json FIND "find_dependency(nlohmann_json)" PC nlohmann_json)
 soma_package_dependency(urdfdom::urdfdom_model FIND "find_dependency(urdfdom CONFIG)" PC urdfdom)
+soma_package_dependency(MPI::MPI_CXX FIND "find_dependency(MPI COMPONENTS CXX)" PC ompi-cxx)
 soma_package_dependency(Threads::Threads FIND "find_dependency(Threads)" LIBS -pthread)
 
 # ---- the libraries ---------------------------------------------------------------------------
@@ -99,6 +100,7 @@ soma_package(soma_geometry NAME geometry HEADERS ${PROJECT_SOURCE_DIR}/geometry/
 soma_package(soma_io NAME io HEADERS ${PROJECT_SOURCE_DIR}/io/include OPTIONAL)
 soma_package(soma_render NAME render HEADERS ${PROJECT_SOURCE_DIR}/render/include)
 soma_package(soma_scene NAME scene HEADERS ${PROJECT_SOURCE_DIR}/scene/include OPTIONAL)
+soma_package(soma_sweep NAME sweep HEADERS ${PROJECT_SOURCE_DIR}/sweep/include OPTIONAL)
 
 # soma::soma: everything, with the aggregate header <soma/soma.hpp> (include/soma/soma.hpp;
 # the test "package: soma.hpp includes every public header" keeps it complete).

@@ -10,6 +10,7 @@ packages=(
   libcgal-dev libceres-dev libnlopt-cxx-dev libompl-dev libboost-filesystem-dev
   liburdfdom-dev
   phcpack
+  libopenmpi-dev openmpi-bin   # soma sweep under mpirun (SOMA_MPI, found automatically; issue 26)
   python3 python3-jsonschema
 )
 missing=()

@@ -2,7 +2,7 @@
 // soma: every public header of the library, for `#include <soma/soma.hpp>` (target soma::soma).
 // soma headers come before any Eigen header (scalar.hpp sets up Eigen for __float128 and MPFR),
 // so scalar.hpp is first. The test "package: soma.hpp includes every public header" fails when a
-// header of algebra/, geometry/, io/, scene/ or render/ is missing here (*_impl.hpp are not public).
+// header of algebra/, geometry/, io/, scene/, sweep/ or render/ is missing here (*_impl.hpp are not public).
 #include <soma/algebra/scalar.hpp>
 
 // algebra
@@ -126,11 +126,14 @@
 #include <soma/io/robot_file.hpp>
 #include <soma/io/scene_file.hpp>
 #include <soma/io/scene_output.hpp>
+#include <soma/io/sweep_file.hpp>
 #include <soma/io/urdf_file.hpp>
 
 // scene
 #include <soma/scene/scene_graph.hpp>
 #include <soma/scene/tessellation.hpp>
+// sweep
+#include <soma/sweep/sweep.hpp>
 
 // render
 #include <soma/render/camera.hpp>

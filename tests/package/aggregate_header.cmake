@@ -1,6 +1,6 @@
 # ctest -R package: soma.hpp (include/soma/soma.hpp) includes every public header, and
 # soma/algebra/scalar.hpp first (soma headers go before any Eigen header).
-# Public: every *.hpp under <layer>/include/soma/ of the layers (algebra, geometry, io, scene, render),
+# Public: every *.hpp under <layer>/include/soma/ of the layers (algebra, geometry, io, scene, sweep, render),
 # except the *_impl.hpp definitions and anything in a detail/ or internal/ folder.
 # Usage: cmake -DSOURCE_DIR=<repository> -P aggregate_header.cmake
 cmake_minimum_required(VERSION 3.25)
@@ -20,7 +20,7 @@ if(NOT first STREQUAL "soma/algebra/scalar.hpp")
 endif()
 
 set(public)
-foreach(layer algebra geometry io scene render)
+foreach(layer algebra geometry io scene sweep render)
   file(GLOB_RECURSE headers RELATIVE ${SOURCE_DIR}/${layer}/include ${SOURCE_DIR}/${layer}/include/soma/*.hpp)
   foreach(h ${headers})
     if(NOT h MATCHES "_impl\\.hpp$" AND NOT h MATCHES "/(detail|internal)/")
