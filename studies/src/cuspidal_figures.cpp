@@ -205,6 +205,47 @@ void plotWitness(const CuspidalAnalysis& r, const std::string& title, const std:
   render::renderPlotPng(plot, png, 1100, 1000);
 }
 
+void plotWitness6R(const SerialRobot<double>& robot, const Witness6R& w, const std::string& title,
+                   const std::filesystem::path& png) {
+  render::Plot plot;
+  plot.title = title;
+  plot.x.label = "fraction of the path";
+  plot.y.label = "joint angle (rad); sign·det J / L³ scaled";
+  plot.legend = render::LegendCorner::TopRight;
+  if (w.path.size() >= 2) {
+    // Unwrapped joint angles, against the cumulated joint-space length.
+    std::vector<double> t{0};
+    std::vector<JointVector<double>> q{w.path.front()};
+    for (std::size_t s = 1; s < w.path.size(); ++s) {
+      JointVector<double> d = w.path[s] - w.path[s - 1];
+      for (int i = 0; i < d.size(); ++i) d(i) = std::remainder(d(i), 2 * kPi);
+      q.push_back(q.back() + d);
+      t.push_back(t.back() + d.norm());
+    }
+    for (double& v : t) v /= std::max(t.back(), 1e-300);
+    static const render::Color colours[] = {render::palette::blue,      render::palette::orange,
+                                            render::palette::bluishGreen, render::palette::reddishPurple,
+                                            render::palette::skyBlue,   render::palette::vermillion};
+    for (int i = 0; i < 6; ++i) {
+      std::vector<double> ys;
+      for (const auto& v : q) ys.push_back(v(i));
+      auto& s = plot.add(fmt::format("θ{}", i + 1), t, ys, colours[i]);
+      s.width = 2.5;
+    }
+    std::vector<double> det;
+    double dmax = 0;
+    for (const auto& v : w.path) {
+      det.push_back(w.sign * jacobianDet6(robot, v));
+      dmax = std::max(dmax, det.back());
+    }
+    for (double& v : det) v *= kPi / std::max(dmax, 1e-300);
+    auto& s = plot.add(fmt::format("sign·det J (max → π; min |det J| / L³ = {:.3g})", w.minSignedDet), t, det,
+                       render::palette::black);
+    s.width = 3.5;
+  }
+  render::renderPlotPng(plot, png, 1200, 800);
+}
+
 render::Color cuspCountColor(int count) {
   // Discrete classes: 0 light grey, 2 blue, 4 orange, 6 green, 8+ purple; odd counts (an arm on a
   // boundary, where two cusps merge) black.
