@@ -107,7 +107,7 @@ int cuspidal6RCommand(const io::RobotFile<double>& rf, const std::filesystem::pa
     // STEM_arm_witness.png: the positioning arm's joint space and witness (spherical wrist).
     const std::filesystem::path p(png);
     const std::string stem = (p.parent_path() / p.stem()).string();
-    if (w.found) plotWitness6R(robot, w, name + ": a posture change without singularity", p);
+    if (w.found) plotWitness6R(robot, w, "a posture change without singularity (" + w.planner + ")", p);
     if (wrist) {
       plotJointSpace(a, name + ", positioning arm: aspects and det J = 0", stem + "_arm.png");
       if (a.witness.found) plotWitness(a, name + ", positioning arm: the witness", stem + "_arm_witness.png");

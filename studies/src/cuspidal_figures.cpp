@@ -210,7 +210,7 @@ void plotWitness6R(const SerialRobot<double>& robot, const Witness6R& w, const s
   render::Plot plot;
   plot.title = title;
   plot.x.label = "fraction of the path";
-  plot.y.label = "joint angle (rad); sign·det J / L³ scaled";
+  plot.y.label = "joint angle (rad); log10(sign·det J / L³)";
   plot.legend = render::LegendCorner::TopRight;
   if (w.path.size() >= 2) {
     // Unwrapped joint angles, against the cumulated joint-space length.
@@ -232,14 +232,10 @@ void plotWitness6R(const SerialRobot<double>& robot, const Witness6R& w, const s
       auto& s = plot.add(fmt::format("θ{}", i + 1), t, ys, colours[i]);
       s.width = 2.5;
     }
+    // log10 of sign·det J / L³: finite all along (det J never reaches 0), on the angle axis's scale.
     std::vector<double> det;
-    double dmax = 0;
-    for (const auto& v : w.path) {
-      det.push_back(w.sign * jacobianDet6(robot, v));
-      dmax = std::max(dmax, det.back());
-    }
-    for (double& v : det) v *= kPi / std::max(dmax, 1e-300);
-    auto& s = plot.add(fmt::format("sign·det J (max → π; min |det J| / L³ = {:.3g})", w.minSignedDet), t, det,
+    for (const auto& v : w.path) det.push_back(std::log10(std::max(w.sign * jacobianDet6(robot, v), 1e-300)));
+    auto& s = plot.add(fmt::format("log10(sign·det J / L³), min {:.3g}", std::log10(w.minSignedDet)), t, det,
                        render::palette::black);
     s.width = 3.5;
   }

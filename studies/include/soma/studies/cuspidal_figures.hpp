@@ -16,7 +16,7 @@ void plotJointSpace(const CuspidalAnalysis& r, const std::string& title, const s
 void plotSection(const CuspidalAnalysis& r, const std::string& title, const std::filesystem::path& png);
 void plotWitness(const CuspidalAnalysis& r, const std::string& title, const std::filesystem::path& png);
 /// A 6R witness: the six joint angles along the path (against the fraction of the path) and
-/// sign·det J / L³ along it, scaled to the plot (its minimum said in the legend).
+/// log10(sign·det J / L³) along it (its minimum said in the legend).
 void plotWitness6R(const SerialRobot<double>& robot, const Witness6R& w, const std::string& title,
                    const std::filesystem::path& png);
 
