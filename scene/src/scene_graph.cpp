@@ -304,7 +304,23 @@ template <class S> OutputResult SceneGraph::compute(const io::SceneOutput& o, co
         c.witnessPoints = int(a.witness.path.size());
         c.witnessNote = a.witness.note;
         c.seconds = a.seconds;
-        if (a.witness.found) {
+        if (a.sixR) {
+          // 6R: the witness is witness6r (a spherical-wrist robot's `witness` is its positioning
+          // arm's, three joints: not this robot's).
+          const Witness6R& w6 = a.witness6r;
+          c.witnessFound = w6.found;
+          c.witnessCertified = false;
+          c.witnessPoints = int(w6.path.size());
+          c.witnessNote = w6.note;
+          if (w6.found) {
+            c.witnessTarget = {w6.pose.translation()(0), w6.pose.translation()(1), w6.pose.translation()(2)};
+            c.witnessStart = doubles(w6.start);
+            c.witnessGoal = doubles(w6.goal);
+            c.residual = std::max(w6.startResidual, w6.goalResidual);
+            r.joints = {c.witnessStart, c.witnessGoal};
+            for (const JointVector<double>& q : w6.path) r.path.push_back(doubles(q));
+          }
+        } else if (a.witness.found) {
           c.witnessTarget = {a.witness.target(0), a.witness.target(1), a.witness.target(2)};
           c.witnessStart = doubles(a.witness.start);
           c.witnessGoal = doubles(a.witness.goal);

@@ -3,6 +3,7 @@
 // continuation, a witness path planned with OMPL, and the bifurcation claim (at det J = 0 two
 // roots of the IK equation coalesce).
 #include "soma/geometry/serial/closed_form_ik.hpp"
+#include "soma/geometry/cuspidal/cuspidality.hpp"
 #include "soma/geometry/cuspidal/witness6r.hpp"
 #include "soma/render/plot.hpp"
 #include "soma/geometry/serial/example_robots.hpp"
@@ -96,8 +97,12 @@ void renderRobotPath(const SerialRobot<S>& robot, const std::vector<JointVector<
   draw(path.front(), rd::palette::bluishGreen, 0.009 * L);
   draw(path.back(), rd::palette::reddishPurple, 0.009 * L);
   rd::Polyline trace;
-  for (std::size_t k = 0; k + 1 < n; ++k)
-    for (int t = 0; t < 8; ++t) trace.p.push_back(robot.fk(JointVector<S>(path[k] + (path[k + 1] - path[k]) * (t / 8.0))).translation());
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    // Shortest arcs: a path state wrapped at ±π is next to one just across.
+    JointVector<S> d = path[k + 1] - path[k];
+    for (int i = 0; i < d.size(); ++i) d(i) = std::remainder(d(i), 2 * kPi);
+    for (int t = 0; t < 8; ++t) trace.p.push_back(robot.fk(JointVector<S>(path[k] + d * (t / 8.0))).translation());
+  }
   trace.p.push_back(robot.fk(path.back()).translation());
   trace.width = 3;
   scene.add(trace);
@@ -402,27 +407,88 @@ void workspaceStudy(Context& c) {
 }
 
 // 6R witness search: PUMA 560 (not cuspidal, det J factors) and a cuspidal 6R (the orthogonal
-// arm + spherical wrist, the IRB 6400C architecture).
+// arm + spherical wrist, the IRB 6400C architecture) — the search, compared with the decomposition.
 void witness6RStudy(Context& c) {
   const SerialRobot<S> puma = puma560Robot<S>();
-  const Witness6R wp = findWitness6R(puma, 2, 0.1);
+  Witness6ROptions po;
+  po.poses = 2;
+  po.secondsPerPair = 0.1;
+  const Witness6R wp = findWitness6R(puma, po);
   c.checkEqual("PUMA 560: no witness after 2 poses (it is not cuspidal; the search says 'not a proof')", 1,
                !wp.found && wp.note.find("not a proof") != std::string::npos);
   c.note(fmt::format("PUMA: {} postures, {} same-sign pairs planned, {:.1f} s", wp.posturesSeen, wp.pairsTried, wp.seconds));
   const SerialRobot<S> cusp6 = orthogonalWristRobot<S>();
-  const Witness6R w = findWitness6R(cusp6, 8, 0.5);
+  Witness6ROptions co;
+  co.poses = 8;
+  const Witness6R w = findWitness6R(cusp6, co);
   c.checkEqual("orthogonal arm (1, 2, 1.5, 1, 0) + spherical wrist: a witness found", 1, w.found);
   if (!w.found) return;
   c.checkResidual("both ends reach the pose", std::max(w.startResidual, w.goalResidual), Tolerance<S>::sqrtEpsilon());
   c.checkEqual("sign·det J > 0 over the dense check of the path", 1, w.minSignedDet > 0);
-  c.note(fmt::format("witness after {} poses, {} pairs: {} path states, min sign·det J / L³ {:.3g} (margin {:.3g}), {:.1f} s",
-                     w.posesTried, w.pairsTried, w.path.size(), w.minSignedDet, w.margin, w.seconds));
+  c.note(fmt::format("witness ({}) after {} poses, {} pairs: {} path states, min sign·det J / L³ {:.3g} (margin {:.3g}), {:.1f} s",
+                     w.planner, w.posesTried, w.straightTried, w.path.size(), w.minSignedDet, w.margin, w.seconds));
   if (c.makeFigures()) {
     renderRobotPath(cusp6, w.path, 5, "A cuspidal 6R changes posture without a singularity",
                     c.figurePath("gf05_cusp_witness_6r.png"), Eigen::Vector3d(-0.35, -1.0, -0.3));
     c.figure("gf05_cusp_witness_6r.png",
-             "6R witness (OMPL RRTConnect in joint space, det J of one sign): start (green) and goal (purple) "
+             "6R witness (joint-space search, det J of one sign): start (green) and goal (purple) "
              "postures reach the same pose; ghosts in between; the tool point's trace in black.");
+  }
+}
+
+// Decided by decomposition (decomposition.hpp): a spherical wrist gives the positioning arm's
+// verdict; three parallel axes next to a meeting pair (UR) are never cuspidal. And a general 6R
+// from the literature, the FANUC CRX-10iA (non-Pieper, modified DH), found cuspidal by the search.
+void decomposition6RStudy(Context& c) {
+  CuspidalOptions o;
+  o.aspectGrid = 128;
+  const SerialRobot<S> cusp6 = orthogonalWristRobot<S>();
+  const CuspidalAnalysis a = analyseCuspidality(cusp6, o);
+  c.checkEqual("orthogonal arm + wrist: decomposed by its spherical wrist", 1,
+               a.decomposition.kind == CuspidalDecompositionKind::SphericalWrist);
+  c.checkEqual("orthogonal arm + wrist: cuspidal (exact: the arm's 4 cusp points)", 4, (long long)a.cusps.cusps.size());
+  c.checkEqual("orthogonal arm + wrist: the arm's witness lifted to the 6R (orientation held)", 1, a.witness6r.found);
+  if (a.witness6r.found)
+    c.note(fmt::format("lifted witness: {} states, min sign·det J / L³ {:.3g}, {:.2f} s in all (the search above: the same "
+                       "verdict by an independent method)",
+                       a.witness6r.path.size(), a.witness6r.minSignedDet, a.seconds));
+  for (const SerialRobot<S>& robot : {puma560Robot<S>(), kr6Robot<S>(), ur5Robot<S>()}) {
+    const CuspidalAnalysis r = analyseCuspidality(robot, o);
+    c.checkEqual(robot.name() + ": not cuspidal, exactly, by " +
+                     (r.decomposition.kind == CuspidalDecompositionKind::ParallelChain ? "the parallel chain (axes " + r.decomposition.axes + ")"
+                                                                                      : "its spherical wrist (axes " + r.decomposition.axes + ")"),
+                 1, r.decided && !r.cuspidal && r.decomposition.kind != CuspidalDecompositionKind::None);
+    c.note(fmt::format("{}: {:.3f} s", robot.name(), r.seconds));
+  }
+  // The CRX-10iA: no decomposition; the search (budget 60 s).
+  const SerialRobot<S> crx = crx10iaRobot<S>();
+  CuspidalOptions so;
+  so.poses = 200;
+  so.secondsPerPair = 0.3;
+  so.budget = 60;
+  const CuspidalAnalysis r = analyseCuspidality(crx, so);
+  const Witness6R& w = r.witness6r;
+  c.checkEqual("FANUC CRX-10iA: no decomposition applies", 1, r.decomposition.kind == CuspidalDecompositionKind::None);
+  c.checkEqual("FANUC CRX-10iA: a witness found within 60 s (cuspidal, as Salunkhe, Chablat & Wenger 2023 report)", 1,
+               w.found);
+  c.note(fmt::format("CRX-10iA search: {} poses, {} postures, {} same-sign pairs, {} planned with OMPL, {:.1f} s", w.posesTried,
+                     w.posturesSeen, w.straightTried, w.pairsTried, w.seconds));
+  if (!w.found) return;
+  c.checkResidual("CRX-10iA: both ends reach the pose", poseResidual(crx.fk(w.goal), crx.fk(w.start), crx.lengthScale()),
+                  Tolerance<S>::sqrtEpsilon());
+  double minDet = std::numeric_limits<double>::infinity();
+  for (const auto& q : w.path) minDet = std::min(minDet, w.sign * jacobianDet6(crx, q));
+  c.checkEqual("CRX-10iA: sign·det J > 0 at every path state", 1, minDet > 0);
+  c.note(fmt::format("CRX-10iA witness ({}): {} states, min |det J| / L³ = {:.3g} over the dense check", w.planner,
+                     w.path.size(), w.minSignedDet));
+  if (c.makeFigures()) {
+    renderRobotPath(crx, w.path, 5, "FANUC CRX-10iA changes posture without a singularity",
+                    c.figurePath("gf05_crx_witness.png"), Eigen::Vector3d(-0.5, -1.0, -0.35));
+    c.figure("gf05_crx_witness.png",
+             "FANUC CRX-10iA witness (search): start (green) and goal (purple) postures reach the same pose (drawn through the DH frame origins, the goal hides most of the start here); "
+             "ghosts in between; the flange point's trace in black.");
+    plotWitness6R(crx, w, "FANUC CRX-10iA: joint angles and det J along the witness", c.figurePath("gf05_crx_witness_joints.png"));
+    c.figure("gf05_crx_witness_joints.png", "The six joint angles along the witness and log10(sign·det J / L³): finite all along, det J never 0.");
   }
 }
 
@@ -441,6 +507,10 @@ SOMA_STUDY({.id = "SOMA-5.2.3-workspace-ompl",
 SOMA_STUDY({.id = "SOMA-5.2.3-witness-6r",
             .title = "6R witness search: PUMA 560 none found (not a proof), a cuspidal 6R found",
             .source = "GF §5.2.3; Wenger", .chapter = kChapter, .run = witness6RStudy});
+SOMA_STUDY({.id = "SOMA-5.2.3-decomposition-6r",
+            .title = "6R cuspidality decided by decomposition (wrist + arm, UR chain), the CRX-10iA found cuspidal",
+            .source = "GF §5.2.3; Baili, Wenger, Chablat 2004; Salunkhe, Chablat, Wenger 2023", .chapter = kChapter,
+            .run = decomposition6RStudy});
 
 }  // namespace
 }  // namespace soma::studies::SOMA_UNITY_ID

@@ -205,6 +205,43 @@ void plotWitness(const CuspidalAnalysis& r, const std::string& title, const std:
   render::renderPlotPng(plot, png, 1100, 1000);
 }
 
+void plotWitness6R(const SerialRobot<double>& robot, const Witness6R& w, const std::string& title,
+                   const std::filesystem::path& png) {
+  render::Plot plot;
+  plot.title = title;
+  plot.x.label = "fraction of the path";
+  plot.y.label = "joint angle (rad); log10(sign·det J / L³)";
+  plot.legend = render::LegendCorner::TopRight;
+  if (w.path.size() >= 2) {
+    // Unwrapped joint angles, against the cumulated joint-space length.
+    std::vector<double> t{0};
+    std::vector<JointVector<double>> q{w.path.front()};
+    for (std::size_t s = 1; s < w.path.size(); ++s) {
+      JointVector<double> d = w.path[s] - w.path[s - 1];
+      for (int i = 0; i < d.size(); ++i) d(i) = std::remainder(d(i), 2 * kPi);
+      q.push_back(q.back() + d);
+      t.push_back(t.back() + d.norm());
+    }
+    for (double& v : t) v /= std::max(t.back(), 1e-300);
+    static const render::Color colours[] = {render::palette::blue,      render::palette::orange,
+                                            render::palette::bluishGreen, render::palette::reddishPurple,
+                                            render::palette::skyBlue,   render::palette::vermillion};
+    for (int i = 0; i < 6; ++i) {
+      std::vector<double> ys;
+      for (const auto& v : q) ys.push_back(v(i));
+      auto& s = plot.add(fmt::format("θ{}", i + 1), t, ys, colours[i]);
+      s.width = 2.5;
+    }
+    // log10 of sign·det J / L³: finite all along (det J never reaches 0), on the angle axis's scale.
+    std::vector<double> det;
+    for (const auto& v : w.path) det.push_back(std::log10(std::max(w.sign * jacobianDet6(robot, v), 1e-300)));
+    auto& s = plot.add(fmt::format("log10(sign·det J / L³), min {:.3g}", std::log10(w.minSignedDet)), t, det,
+                       render::palette::black);
+    s.width = 3.5;
+  }
+  render::renderPlotPng(plot, png, 1200, 800);
+}
+
 render::Color cuspCountColor(int count) {
   // Discrete classes: 0 light grey, 2 blue, 4 orange, 6 green, 8+ purple; odd counts (an arm on a
   // boundary, where two cusps merge) black.

@@ -4,8 +4,7 @@
 
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/small_linalg.hpp"
-#include "soma/geometry/serial/closed_form_ik.hpp"
-#include "soma/geometry/serial/general_6r.hpp"
+#include "soma/geometry/serial/ik.hpp"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/spaces/SO2StateSpace.h>
@@ -17,7 +16,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <mutex>
+#include <sstream>
 #include <random>
 
 namespace soma {
@@ -35,24 +36,12 @@ bool limitedJoint(const SerialJoint<double>& j) {
   return std::isfinite(j.lower) && std::isfinite(j.upper) && j.upper - j.lower < 2 * kPi;
 }
 
-Solution<double> allPostures(const SerialRobot<double>& robot, const SE3<double>& pose, std::string& method) {
-  const IkMethod m = classifyRobot(robot);
-  if (m == IkMethod::Pieper) {
-    method = "pieper";
-    return solveClosedForm(robot, pose, IkMethod::Pieper);
-  }
-  const auto& rows = robot.dhRows();
-  const bool identity = (robot.base().translation().squaredNorm() == 0 && robot.tool().translation().squaredNorm() == 0 &&
-                         (robot.base().rotation().matrix() - Mat3<double>::Identity()).norm() == 0 &&
-                         (robot.tool().rotation().matrix() - Mat3<double>::Identity()).norm() == 0);
-  if (rows.size() != 6 || robot.convention() != DHConvention::Standard || !identity)
-    throw InvalidInput("cuspidal: the 6R witness search needs a Pieper robot, or a general 6R given by standard DH "
-                       "rows without base or tool transform (robot '" + robot.name() + "')");
-  method = "general6r";
-  Robot6R<double> r6;
-  for (int i = 0; i < 6; ++i) r6[std::size_t(i)] = rows[std::size_t(i)];
-  const General6RSolution<double> g = solveGeneral6R(r6, pose);
-  return Solution<double>(g);
+constexpr double kCheckStep = 0.002;  // rad between densely checked points
+
+std::string fmtSeconds(double s) {
+  std::ostringstream o;
+  o << s;
+  return o.str();
 }
 
 }  // namespace
@@ -66,21 +55,32 @@ double jacobianDet6(const SerialRobot<double>& robot, const JointVector<double>&
 }
 
 // GF §5.2.3 (cuspidal robots: a posture change without a singularity)
-Witness6R findWitness6R(const SerialRobot<double>& robot, int poses, double secondsPerPair, unsigned long long seed) {
+Witness6R findWitness6R(const SerialRobot<double>& robot, const Witness6ROptions& options) {
   if (robot.dof() != 6)
     throw InvalidInput("cuspidal: robot '" + robot.name() + "' has " + std::to_string(robot.dof()) +
                        " joints; the witness search handles 3R arms and 6R robots");
   for (int i = 0; i < 6; ++i)
     if (robot.joints()[i].type != JointType::Revolute)
       throw InvalidInput("cuspidal: joint " + std::to_string(i + 1) + " of robot '" + robot.name() + "' is prismatic");
-  if (poses < 1) throw InvalidInput("cuspidal: the number of poses must be at least 1");
-  if (!(secondsPerPair > 0)) throw InvalidInput("cuspidal: the planning time per pair must be positive");
+  if (options.poses < 1) throw InvalidInput("cuspidal: the number of poses must be at least 1");
+  if (!(options.secondsPerPair > 0)) throw InvalidInput("cuspidal: the planning time per pair must be positive");
+  if (!(options.budget >= 0)) throw InvalidInput("cuspidal: the budget must be a number of seconds ≥ 0");
   quietOmpl();
   const auto t0 = std::chrono::steady_clock::now();
+  auto elapsed = [&]() { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  auto left = [&]() { return options.budget > 0 ? options.budget - elapsed() : std::numeric_limits<double>::infinity(); };
   Witness6R w;
   auto finish = [&]() {
-    w.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    w.seconds = elapsed();
     return w;
+  };
+  double lastReport = 0;
+  auto report = [&](bool force) {
+    if (!options.progress) return;
+    const double t = elapsed();
+    if (!force && t - lastReport < 1.0) return;
+    lastReport = t;
+    options.progress({w.posesTried, w.pairsTried, w.posturesSeen, t});
   };
   // Joint space: SO(2) per unlimited joint, the limit interval otherwise.
   auto space = std::make_shared<ob::CompoundStateSpace>();
@@ -111,8 +111,33 @@ Witness6R findWitness6R(const SerialRobot<double>& robot, int poses, double seco
       else cs->as<ob::RealVectorStateSpace::StateType>(i)->values[0] = q(i);
     }
   };
-  std::mt19937_64 g(seed);
-  for (int k = 0; k < poses; ++k) {
+  // Dense check of a path (shortest arcs on SO(2) joints, ≤ kCheckStep between checked points):
+  // min of sign·det J, and the path refined to the checked points.
+  auto denseCheck = [&](const std::vector<JointVector<double>>& path, int sign, std::vector<JointVector<double>>* dense) {
+    double minDet = sign * jacobianDet6(robot, path.front());
+    if (dense) dense->assign(1, path.front());
+    for (std::size_t s = 0; s + 1 < path.size(); ++s) {
+      JointVector<double> d = path[s + 1] - path[s];
+      for (int i = 0; i < 6; ++i)
+        if (so2[std::size_t(i)]) d(i) = std::remainder(d(i), 2 * kPi);
+      const int m = std::max(1, int(std::ceil(d.cwiseAbs().maxCoeff() / kCheckStep)));
+      for (int t = 1; t <= m; ++t) {
+        const JointVector<double> q = path[s] + d * (double(t) / m);
+        minDet = std::min(minDet, sign * jacobianDet6(robot, q));
+        if (!(minDet > 0)) return minDet;  // (callers ask more: the margin)
+        if (dense && (t == m || t % 25 == 0)) dense->push_back(q);
+      }
+    }
+    return minDet;
+  };
+  IkOptions ik;
+  ik.method = IkMethod::Auto;
+  std::mt19937_64 g(options.seed);
+  for (int k = 0; k < options.poses; ++k) {
+    if (left() <= 0) {
+      w.budgetExhausted = true;
+      break;
+    }
     // A random posture within the limits defines a reachable pose.
     JointVector<double> q0(6);
     for (int i = 0; i < 6; ++i) {
@@ -122,7 +147,8 @@ Witness6R findWitness6R(const SerialRobot<double>& robot, int poses, double seco
     }
     const SE3<double> pose = robot.fk(q0);
     ++w.posesTried;
-    const Solution<double> sol = allPostures(robot, pose, w.ikMethod);
+    const IkSolution<double> sol = solveIk(robot, pose, ik);
+    w.ikMethod = sol.method;
     std::vector<JointVector<double>> qs;
     std::vector<double> det, res;
     for (std::size_t i = 0; i < sol.postures.size(); ++i) {
@@ -135,55 +161,86 @@ Witness6R findWitness6R(const SerialRobot<double>& robot, int poses, double seco
       res.push_back(sol.residuals[i]);
     }
     w.posturesSeen += int(qs.size());
+    auto accept = [&](std::size_t a, std::size_t b, int sign, double margin, std::vector<JointVector<double>> path,
+                      double minDet, const char* planner) {
+      w.found = true;
+      w.pose = pose;
+      w.start = qs[a];
+      w.goal = qs[b];
+      w.path = std::move(path);
+      w.planner = planner;
+      w.sign = sign;
+      w.margin = margin;
+      w.minSignedDet = minDet;
+      w.startResidual = res[a];
+      w.goalResidual = res[b];
+    };
+    // Same-sign pairs: the straight joint path for all of them first (cheap), then OMPL.
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
     for (std::size_t a = 0; a < qs.size(); ++a)
-      for (std::size_t b = a + 1; b < qs.size(); ++b) {
-        if (!(det[a] * det[b] > 0)) continue;
-        const int sign = det[a] > 0 ? 1 : -1;
-        const double margin = 0.25 * std::min(std::abs(det[a]), std::abs(det[b]));
+      for (std::size_t b = a + 1; b < qs.size(); ++b)
+        if (det[a] * det[b] > 0) pairs.emplace_back(a, b);
+    // The margin matters: sign·det J > 0 at sampled points alone is fooled by an even-order zero
+    // (two factors of det J vanishing at one point — a straight path between mirror postures of a
+    // PUMA crosses the wrist and the elbow singularities at its midpoint, and det J touches 0).
+    auto marginOf = [&](std::size_t a, std::size_t b) { return 0.25 * std::min(std::abs(det[a]), std::abs(det[b])); };
+    for (const auto& [a, b] : pairs) {
+      const int sign = det[a] > 0 ? 1 : -1;
+      const double margin = marginOf(a, b);
+      ++w.straightTried;
+      std::vector<JointVector<double>> dense;
+      const double minDet = denseCheck({qs[a], qs[b]}, sign, &dense);
+      if (minDet >= margin) {
         ++w.pairsTried;
-        og::SimpleSetup ss(space);
-        ss.setStateValidityChecker([&](const ob::State* s) {
-          const JointVector<double> q = toJoints(s);
-          return robot.withinLimits(q) && sign * jacobianDet6(robot, q) >= margin;
-        });
-        ss.getSpaceInformation()->setStateValidityCheckingResolution(0.002);
-        ob::ScopedState<ob::CompoundStateSpace> A(space), B(space);
-        fromJoints(qs[a], A.get());
-        fromJoints(qs[b], B.get());
-        ss.setStartAndGoalStates(A, B);
-        ss.setPlanner(std::make_shared<og::RRTConnect>(ss.getSpaceInformation()));
-        if (ss.solve(secondsPerPair) != ob::PlannerStatus::EXACT_SOLUTION) continue;
-        ss.simplifySolution(0.2);
-        og::PathGeometric& p = ss.getSolutionPath();
-        p.interpolate();
-        std::vector<JointVector<double>> path;
-        for (std::size_t s = 0; s < p.getStateCount(); ++s) path.push_back(toJoints(p.getState(s)));
-        // Dense re-check (≤ 0.002 rad between checked points, shortest arcs on SO(2) joints).
-        double minDet = sign * det[a];
-        for (std::size_t s = 0; s + 1 < path.size(); ++s) {
-          JointVector<double> d = path[s + 1] - path[s];
-          for (int i = 0; i < 6; ++i)
-            if (so2[std::size_t(i)]) d(i) = std::remainder(d(i), 2 * kPi);
-          const int m = std::max(1, int(std::ceil(d.cwiseAbs().maxCoeff() / 0.002)));
-          for (int t = 1; t <= m; ++t) minDet = std::min(minDet, sign * jacobianDet6(robot, path[s] + d * (double(t) / m)));
-        }
-        if (!(minDet > 0)) continue;
-        w.found = true;
-        w.pose = pose;
-        w.start = qs[a];
-        w.goal = qs[b];
-        w.path = std::move(path);
-        w.sign = sign;
-        w.margin = margin;
-        w.minSignedDet = minDet;
-        w.startResidual = res[a];
-        w.goalResidual = res[b];
+        accept(a, b, sign, margin, std::move(dense), minDet, "straight joint path");
+        report(true);
         return finish();
       }
+    }
+    for (const auto& [a, b] : pairs) {
+      const double budgetLeft = left();
+      if (budgetLeft <= 0) {
+        w.budgetExhausted = true;
+        break;
+      }
+      const int sign = det[a] > 0 ? 1 : -1;
+      const double margin = marginOf(a, b);
+      ++w.pairsTried;
+      og::SimpleSetup ss(space);
+      ss.setStateValidityChecker([&](const ob::State* s) {
+        const JointVector<double> q = toJoints(s);
+        return robot.withinLimits(q) && sign * jacobianDet6(robot, q) >= margin;
+      });
+      ss.getSpaceInformation()->setStateValidityCheckingResolution(0.002);
+      ob::ScopedState<ob::CompoundStateSpace> A(space), B(space);
+      fromJoints(qs[a], A.get());
+      fromJoints(qs[b], B.get());
+      ss.setStartAndGoalStates(A, B);
+      ss.setPlanner(std::make_shared<og::RRTConnect>(ss.getSpaceInformation()));
+      const bool solved = ss.solve(std::min(options.secondsPerPair, budgetLeft)) == ob::PlannerStatus::EXACT_SOLUTION;
+      report(false);
+      if (!solved) continue;
+      ss.simplifySolution(0.2);
+      og::PathGeometric& p = ss.getSolutionPath();
+      p.interpolate();
+      std::vector<JointVector<double>> path;
+      for (std::size_t s = 0; s < p.getStateCount(); ++s) path.push_back(toJoints(p.getState(s)));
+      // Re-checked at ≤ 0.002 rad, at least half the margin (the planner checked its states at
+      // its own resolution).
+      const double minDet = denseCheck(path, sign, nullptr);
+      if (!(minDet >= 0.5 * margin)) continue;
+      accept(a, b, sign, margin, std::move(path), minDet, "OMPL RRTConnect");
+      report(true);
+      return finish();
+    }
+    report(true);
+    if (w.budgetExhausted) break;
   }
-  w.note = "none found after " + std::to_string(w.posesTried) + " poses (" + std::to_string(w.pairsTried) +
-           " same-sign posture pairs, " + std::to_string(secondsPerPair) +
-           " s of OMPL RRTConnect each) — not a proof that the robot is not cuspidal";
+  w.note = "none found after " + std::to_string(w.posesTried) + " poses (" + std::to_string(w.straightTried) +
+           " same-sign posture pairs, straight joint paths, " + std::to_string(w.pairsTried) + " planned with " +
+           fmtSeconds(options.secondsPerPair) + " s of OMPL RRTConnect each" +
+           (w.budgetExhausted ? "; the budget of " + fmtSeconds(options.budget) + " s ran out" : std::string()) +
+           ") — not a proof that the robot is not cuspidal";
   return finish();
 }
 

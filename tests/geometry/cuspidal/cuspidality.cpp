@@ -39,7 +39,8 @@ TEST_CASE("analyseCuspidality: Verheye's arm is cuspidal — 4 cusps by both met
   CHECK(b.witness.path.empty());
 }
 
-TEST_CASE("analyseCuspidality: the PUMA arm is not cuspidal, the PUMA 560 has no 6R witness", "[cuspidal][entry]") {
+TEST_CASE("analyseCuspidality: the PUMA arm is not cuspidal, nor is the PUMA 560 (decomposed; searched: no witness)",
+          "[cuspidal][entry]") {
   const CuspidalAnalysis a = analyseCuspidality(pumaArm());
   CHECK_FALSE(a.cuspidal);
   CHECK(a.cusps.cusps.empty());
@@ -51,11 +52,20 @@ TEST_CASE("analyseCuspidality: the PUMA arm is not cuspidal, the PUMA 560 has no
   rows.push_back({JointType::Revolute, 0, kHalfPi, 0.4318, 0});
   rows.push_back({JointType::Revolute, 0, -kHalfPi, 0, 0});
   rows.push_back({JointType::Revolute, 0, 0, 0.05625, 0});
+  const CuspidalAnalysis d = analyseCuspidality(SerialRobot<double>::fromDH(rows));
+  CHECK(d.sixR);
+  CHECK(d.decomposition.kind == CuspidalDecompositionKind::SphericalWrist);
+  CHECK(d.decided);
+  CHECK_FALSE(d.cuspidal);
+  CHECK(d.aspectMap.count() == 4);
   CuspidalOptions o;
   o.poses = 1;
   o.secondsPerPair = 0.1;
+  o.forceSearch = true;
   const CuspidalAnalysis b = analyseCuspidality(SerialRobot<double>::fromDH(rows), o);
   CHECK(b.sixR);
+  CHECK(b.decomposition.kind == CuspidalDecompositionKind::None);
+  CHECK_FALSE(b.decided);
   CHECK_FALSE(b.cuspidal);
   CHECK(b.witness6r.posesTried == 1);
   CHECK(b.witness6r.note.find("not a proof") != std::string::npos);

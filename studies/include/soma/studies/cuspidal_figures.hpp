@@ -15,6 +15,10 @@ namespace soma::studies {
 void plotJointSpace(const CuspidalAnalysis& r, const std::string& title, const std::filesystem::path& png);
 void plotSection(const CuspidalAnalysis& r, const std::string& title, const std::filesystem::path& png);
 void plotWitness(const CuspidalAnalysis& r, const std::string& title, const std::filesystem::path& png);
+/// A 6R witness: the six joint angles along the path (against the fraction of the path) and
+/// log10(sign·det J / L³) along it (its minimum said in the legend).
+void plotWitness6R(const SerialRobot<double>& robot, const Witness6R& w, const std::string& title,
+                   const std::filesystem::path& png);
 
 /// The cusp-count map as coloured cells (one colour per count, legend swatches), optional
 /// check points (x, y, traced count) marked on top.

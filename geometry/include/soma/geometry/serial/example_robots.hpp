@@ -50,4 +50,48 @@ template <class S> SerialRobot<S> orthogonalWristRobot() {
   return SerialRobot<S>::fromDH(rows, DHConvention::Standard, SE3<S>(), SE3<S>(), "orthogonal arm + spherical wrist");
 }
 
+/// Universal Robots UR5 as a POE robot (the joint axes at q = 0), from the maker's DH d1, a2, a3, d4,
+/// d5, d6 (α1 = α4 = 90°, α5 = −90°; other lengths give the same family), as studies/robots/ur5_poe.json.
+/// Axes 2, 3, 4 parallel, axes 5, 6 meeting.
+template <class S>
+SerialRobot<S> ur5Robot(const S& d1 = S(89159) / S(1000000), const S& a2 = S(-425) / S(1000),
+                        const S& a3 = S(-39225) / S(100000), const S& d4 = S(10915) / S(100000),
+                        const S& d5 = S(9465) / S(100000), const S& d6 = S(823) / S(10000)) {
+  const S h = pi<S>() / S(2);
+  std::vector<DHRow<S>> rows = {{JointType::Revolute, S(0), h, d1, S(0)},  {JointType::Revolute, a2, S(0), S(0), S(0)},
+                                {JointType::Revolute, a3, S(0), S(0), S(0)}, {JointType::Revolute, S(0), h, d4, S(0)},
+                                {JointType::Revolute, S(0), -h, d5, S(0)},  {JointType::Revolute, S(0), S(0), d6, S(0)}};
+  const SerialRobot<S> dh = SerialRobot<S>::fromDH(rows);
+  return SerialRobot<S>::fromPOE(dh.joints(), dh.home(), "UR5");
+}
+
+/// KUKA KR 6 R900 sixx in modified DH (a_{i-1}, α_{i-1}, d_i, θ_i), its 400 mm base height as a base
+/// transform (studies/robots/kr6_r900_mdh.json, without the joint limits). Axes 4, 5, 6 meet.
+template <class S> SerialRobot<S> kr6Robot() {
+  const S h = pi<S>() / S(2);
+  std::vector<DHRow<S>> rows = {{JointType::Revolute, S(0), S(0), S(0), S(0)},
+                                {JointType::Revolute, S(25) / S(1000), -h, S(0), S(0)},
+                                {JointType::Revolute, S(455) / S(1000), S(0), S(0), -h},
+                                {JointType::Revolute, S(35) / S(1000), -h, S(420) / S(1000), S(0)},
+                                {JointType::Revolute, S(0), h, S(0), S(0)},
+                                {JointType::Revolute, S(0), -h, S(80) / S(1000), S(0)}};
+  return SerialRobot<S>::fromDH(rows, DHConvention::Modified, SE3<S>(SO3<S>(), Vec3<S>(S(0), S(0), S(4) / S(10))),
+                                SE3<S>(), "KUKA KR6 R900");
+}
+
+/// FANUC CRX-10iA in the modified DH of Abbes & Poisson, Robotics 13(6):91, 2024, Table 2 (metres;
+/// joint 3 its own variable), as studies/robots/crx10ia_mdh.json. Not a Pieper robot; reported
+/// cuspidal by Salunkhe, Chablat & Wenger (ICRA 2023).
+template <class S> SerialRobot<S> crx10iaRobot() {
+  const S h = pi<S>() / S(2);
+  std::vector<DHRow<S>> rows = {{JointType::Revolute, S(0), S(0), S(0), S(0)},
+                                {JointType::Revolute, S(0), -h, S(0), -h},
+                                {JointType::Revolute, S(54) / S(100), S(2) * h, S(0), S(0)},
+                                {JointType::Revolute, S(0), -h, S(-54) / S(100), S(0)},
+                                {JointType::Revolute, S(0), h, S(15) / S(100), S(0)},
+                                {JointType::Revolute, S(0), -h, S(-16) / S(100), S(0)}};
+  return SerialRobot<S>::fromDH(rows, DHConvention::Modified, SE3<S>(), SE3<S>(), "FANUC CRX-10iA");
+}
+
 }  // namespace soma
+
