@@ -5,6 +5,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$(date +%s)
 bash scripts/build.sh
+# The Python module (README "Python"; built by `all`) installed into Debian's python3 before its tests.
+if grep -q '^SOMA_PYTHON:BOOL=ON' build/release/CMakeCache.txt; then cmake --install build/release --component python; fi
 ctest --preset release "$@"
 tests_done=$(date +%s)
 echo "soma tests: built and ran in $(( tests_done - start )) s"
