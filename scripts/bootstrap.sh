@@ -12,6 +12,9 @@ packages=(
   phcpack
   libopenmpi-dev openmpi-bin   # soma sweep under mpirun (SOMA_MPI, found automatically; issue 26)
   python3 python3-jsonschema
+  # the Python module (python/, issue 23), its tests and notebooks (tests/python/, examples/python/)
+  python3-dev pybind11-dev python3-pybind11 python3-numpy python3-mpmath python3-pytest
+  python3-matplotlib python3-nbclient python3-nbformat python3-ipykernel
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -9,6 +9,8 @@ bash scripts/build.sh
 # bootstrap.sh; as root mpirun needs --allow-run-as-root, which tests/sweep/rows.sh passes). Cost measured
 # 2026-12-02 on this 2-core machine at load average ~13: test_sweep 6 s, the row comparisons 4 s, the
 # resume after SIGKILL 7 s, the 8 bad sweep files 0.3 s each: about 20 s of wall, 6 s of CPU.
+# The Python module (README "Python"; built by `all`) installed into Debian's python3 before its tests.
+if grep -q '^SOMA_PYTHON:BOOL=ON' build/release/CMakeCache.txt; then cmake --install build/release --component python; fi
 ctest --preset release "$@"
 tests_done=$(date +%s)
 echo "soma tests: built and ran in $(( tests_done - start )) s"
