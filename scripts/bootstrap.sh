@@ -11,6 +11,7 @@ packages=(
   liburdfdom-dev
   phcpack
   python3 python3-jsonschema
+  chromium libjs-lunr
 )
 missing=()
 for p in "${packages[@]}"; do
