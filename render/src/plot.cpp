@@ -290,6 +290,20 @@ Scene plotScene(const Plot& plot, int width, int height, Camera* camera, PlotFra
         const double fx = fwd(t.x, plot.x.scale), fy = fwd(t.y, plot.y.scale);
         if (std::isfinite(fx) && std::isfinite(fy) && inside({px(fx), py(fy)})) return true;
       }
+      // A map's cells are data too, except the white ones (the background: nothing there).
+      for (const PlotCells& c : plot.cells) {
+        const double cx0 = fwd(c.x0, plot.x.scale), cx1 = fwd(c.x1, plot.x.scale);
+        const double cy0 = fwd(c.y0, plot.y.scale), cy1 = fwd(c.y1, plot.y.scale);
+        for (int j = 0; j < c.ny; ++j)
+          for (int i = 0; i < c.nx; ++i) {
+            const Color& col = c.cells[std::size_t(j) * c.nx + i];
+            if (col.a <= 0 || (col.r >= 1 && col.g >= 1 && col.b >= 1)) continue;
+            const double ax = px(cx0 + (cx1 - cx0) * i / c.nx), bx = px(cx0 + (cx1 - cx0) * (i + 1) / c.nx);
+            const double ay = py(cy0 + (cy1 - cy0) * j / c.ny), by = py(cy0 + (cy1 - cy0) * (j + 1) / c.ny);
+            if (std::max(ax, bx) >= bx0 && std::min(ax, bx) <= bx1 && std::max(ay, by) >= by0 && std::min(ay, by) <= by1)
+              return true;
+          }
+      }
       return false;
     };
     const LegendCorner corners[4] = {LegendCorner::TopRight, LegendCorner::TopLeft, LegendCorner::BottomRight,

@@ -61,7 +61,8 @@ struct PlotCells {
 
 /// The corner of the plot area the legend box prefers. It goes there when no data lies under it,
 /// else to the first free place among the other corners and the middles of the edges, else outside
-/// the plot area on the right (the area narrows): a legend never hides a point, a curve or a text.
+/// the plot area on the right (the area narrows): a legend never hides a point, a curve, a text or a
+/// cell of a map that is not white.
 enum class LegendCorner { TopRight, TopLeft, BottomRight, BottomLeft };
 
 /// A colour bar right of the plot area for cells coloured with colorMap(t): t = 0 is `min`, t = 1
