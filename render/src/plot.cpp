@@ -235,18 +235,32 @@ Scene plotScene(const Plot& plot, int width, int height, Camera* camera, PlotFra
   const double colorBarW = plot.colorBar ? 150 : 0;
   const double left = 120, bottom = plot.x.label.empty() ? 60 : 100;
   double right = width - 40 - colorBarW;
-  const double top = height - (plot.title.empty() ? 30 : 70) - (plot.y.label.empty() ? 0 : 36);
-  const double rx0 = x0, rx1 = x1, ry0 = y0, ry1 = y1;
+  const double fullTop = height - (plot.title.empty() ? 30 : 70) - (plot.y.label.empty() ? 0 : 36);
+  double top = fullTop;
+  const double rx0 = x0, rx1 = x1, ry0 = y0, ry1 = y1, fullRight = right;
+  const bool xFixed = !std::isnan(plot.x.min) && !std::isnan(plot.x.max);
+  const bool yFixed = !std::isnan(plot.y.min) && !std::isnan(plot.y.max);
   auto fitArea = [&] {
     x0 = rx0, x1 = rx1, y0 = ry0, y1 = ry1;
-    if (!plot.equalAspect) return;  // widen the range that has fewer pixels per unit
+    top = fullTop;
+    if (!plot.equalAspect) return;
+    // Widen the range that has fewer pixels per unit; when the caller fixed both of its limits
+    // (a map that fills its axes), narrow the plot area instead, so the axes fit the data.
     const double sx = (right - left) / (x1 - x0), sy = (top - bottom) / (y1 - y0);
     if (sx > sy) {
-      const double c = (x0 + x1) / 2, h = (right - left) / sy / 2;
-      x0 = c - h, x1 = c + h;
+      if (xFixed) {
+        right = left + (x1 - x0) * sy;
+      } else {
+        const double c = (x0 + x1) / 2, h = (right - left) / sy / 2;
+        x0 = c - h, x1 = c + h;
+      }
     } else {
-      const double c = (y0 + y1) / 2, h = (top - bottom) / sx / 2;
-      y0 = c - h, y1 = c + h;
+      if (yFixed) {
+        top = bottom + (y1 - y0) * sx;
+      } else {
+        const double c = (y0 + y1) / 2, h = (top - bottom) / sx / 2;
+        y0 = c - h, y1 = c + h;
+      }
     }
   };
   fitArea();
@@ -330,7 +344,7 @@ Scene plotScene(const Plot& plot, int width, int height, Camera* camera, PlotFra
           break;
         }
     if (!placed) {  // outside: the plot area gives up the legend's width
-      right -= legendW + 24;
+      right = std::min(right, fullRight - legendW - 24);
       if (right - left < 80) invalid("the legend leaves no room for the plot");
       fitArea();
       xr0 = right + 16 + legendW;
@@ -525,7 +539,7 @@ Scene plotScene(const Plot& plot, int width, int height, Camera* camera, PlotFra
     if (!(std::isfinite(cb.min) && std::isfinite(cb.max) && cb.max > cb.min))
       invalid("colour bar: min " + std::to_string(cb.min) + " is not below max " + std::to_string(cb.max));
     if (cb.scale == AxisScale::Log10 && !(cb.min > 0)) invalid("colour bar: a log scale needs min > 0");
-    cbLeft = width - colorBarW + 14;
+    cbLeft = (legendInside || entries.empty() ? right : xr0 + 8) + 30;
     cbRight = cbLeft + 26;
     const double barTop = top - 30;
     Fill f;
@@ -560,9 +574,9 @@ Scene plotScene(const Plot& plot, int width, int height, Camera* camera, PlotFra
     }
     if (!cb.label.empty()) {
       Label l;
-      l.at = at(cbRight, barTop + 10);
+      l.at = at(cbLeft - 12, barTop + 10);
       l.text = cb.label;
-      l.hAlign = HAlign::Right;
+      l.hAlign = HAlign::Left;
       l.vAlign = VAlign::Bottom;
       l.offset = {0, 0};
       l.pixelHeight = 18;
