@@ -11,7 +11,7 @@ packages=(
   liburdfdom-dev
   phcpack
   python3 python3-jsonschema
-  chromium libjs-lunr
+  chromium libjs-lunr libjs-three
 )
 missing=()
 for p in "${packages[@]}"; do

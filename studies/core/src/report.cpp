@@ -351,6 +351,8 @@ namespace {
 using detail::kReportCss;
 
 constexpr const char* kLunrPath = "/usr/share/javascript/lunr/lunr.min.js";
+constexpr const char* kThreePath = "/usr/share/javascript/three/three.min.js";
+constexpr const char* kOrbitControlsPath = "/usr/share/javascript/three/examples/js/controls/OrbitControls.js";
 
 std::string e(std::string_view s) { return htmlEscape(s); }
 
@@ -642,6 +644,13 @@ void writeStudy(std::ostringstream& h, const StudyResult& r, const Page& page) {
         if (svg.generic_string() != f.file && !page.reportDir.empty() &&
             std::filesystem::exists(page.reportDir / svg, ec))
           h << "<a href=\"" << e(svg.generic_string()) << "\">SVG</a>";
+        // The interactive 3-D view of the same scene (render/scene_js.hpp, viewer.html).
+        std::string js = f.file;
+        if (js.size() > 4 && js.compare(js.size() - 4, 4, ".png") == 0) {
+          js = js.substr(0, js.size() - 4) + ".scene.js";
+          if (!page.reportDir.empty() && std::filesystem::exists(page.reportDir / js, ec))
+            h << "<a class=\"view3d\" href=\"viewer.html?scene=" << e(js) << "\">3-D view</a>";
+        }
         h << "</span>";
       }
       h << "</figcaption></figure>\n";
@@ -880,13 +889,19 @@ void writeReport(const std::filesystem::path& dir, const ReportInfo& info,
   };
   // The search library beside the page, so that the folder opens from disk without a server
   // (Debian's libjs-lunr; without it the page falls back to plain substring search).
-  const fs::path lunr = kLunrPath;
-  if (fs::exists(lunr, ec)) {
-    std::ifstream in(lunr, std::ios::binary);
+  // The 3-D viewer (figures with a .scene.js beside them): Debian's libjs-three and its orbit
+  // controls beside the page.
+  auto copy = [&](const fs::path& from, const std::string& name) {
+    if (!fs::exists(from, ec)) return false;
+    std::ifstream in(from, std::ios::binary);
     std::ostringstream text;
     text << in.rdbuf();
-    write("lunr.min.js", text.str());
-  }
+    write(name, text.str());
+    return true;
+  };
+  copy(kLunrPath, "lunr.min.js");
+  if (copy(kThreePath, "three.min.js") && copy(kOrbitControlsPath, "OrbitControls.js"))
+    write("viewer.html", std::string(detail::kViewerHtml));
   write("report.json", reportJson(info, results));
   write("index.html", reportHtml(info, results, dir, sections));
 }

@@ -267,4 +267,160 @@ inline constexpr std::string_view kReportScript = R"js(
 })();
 )js";
 
+inline constexpr std::string_view kViewerHtml = R"html(<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8"><title>soma — 3-D view</title>
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<style>
+html, body { margin: 0; height: 100%; overflow: hidden; background: #fff; font: 13px "DejaVu Sans", Arial, sans-serif; color: #1d232b; }
+#bar { position: fixed; top: 0; left: 0; right: 0; padding: 6px 12px; background: rgba(243,241,234,.95);
+  border-bottom: 1px solid #d9d4c7; z-index: 2; }
+#bar label { margin-right: 12px; white-space: nowrap; }
+#bar a { margin-right: 12px; color: #2c5c8a; }
+#title { font-weight: 600; margin-right: 16px; }
+#view { position: absolute; top: 0; left: 0; right: 0; bottom: 0; }
+#msg { position: fixed; bottom: 8px; left: 12px; color: #5f6b78; }
+.label { position: absolute; font-size: 12px; pointer-events: none; white-space: nowrap; text-shadow: 0 0 3px #fff; }
+</style></head>
+<body><div id="bar"><a href="index.html">← report</a><span id="title"></span><span id="groups"></span>
+<label><input type="checkbox" id="show-labels" checked> text</label></div>
+<div id="view"></div><div id="labels"></div>
+<div id="msg">drag: rotate · wheel: zoom · right drag: pan</div>
+<script src="three.min.js"></script>
+<script src="OrbitControls.js"></script>
+<script>
+(function () {
+  'use strict';
+  var params = new URLSearchParams(location.search);
+  var file = params.get('scene');
+  var msg = document.getElementById('msg');
+  function fail(text) { msg.textContent = text; document.documentElement.setAttribute('data-ready', 'failed'); }
+  if (!window.THREE) return fail('three.min.js is missing beside this page (Debian package libjs-three).');
+  if (!file || !/^figures\/[A-Za-z0-9._-]+\.scene\.js$/.test(file)) return fail('no scene given (viewer.html?scene=figures/….scene.js)');
+  window.somaScene = function (data) {
+    var view = document.getElementById('view');
+    var renderer;
+    try {
+      renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    } catch (e) { return fail('WebGL is not available: ' + e.message); }
+    renderer.setPixelRatio(window.devicePixelRatio || 1);
+    renderer.setSize(view.clientWidth, view.clientHeight);
+    renderer.setClearColor(0xffffff, 1);
+    view.appendChild(renderer.domElement);
+    var scene = new THREE.Scene();
+    // The robotics convention: z up.
+    var lo = new THREE.Vector3().fromArray(data.bounds[0]), hi = new THREE.Vector3().fromArray(data.bounds[1]);
+    if (!isFinite(lo.x) || !isFinite(hi.x)) { lo.set(-1, -1, -1); hi.set(1, 1, 1); }
+    var centre = lo.clone().add(hi).multiplyScalar(0.5), size = Math.max(hi.clone().sub(lo).length(), 1e-9);
+    var camera = new THREE.PerspectiveCamera(35, view.clientWidth / view.clientHeight, size / 1000, size * 100);
+    camera.up.set(0, 0, 1);
+    camera.position.copy(centre).add(new THREE.Vector3(1, 0.75, 0.55).normalize().multiplyScalar(1.7 * size));
+    scene.add(new THREE.HemisphereLight(0xffffff, 0x777777, 0.75));
+    var sun = new THREE.DirectionalLight(0xffffff, 0.55);
+    sun.position.set(1, 0.6, 1.4);
+    scene.add(sun);
+    var colour = function (c) { return new THREE.Color(c[0], c[1], c[2]); };
+    var material = function (c, lit) {
+      var m = lit ? new THREE.MeshLambertMaterial({ color: colour(c), side: THREE.DoubleSide })
+                  : new THREE.LineBasicMaterial({ color: colour(c) });
+      if (c[3] < 1) { m.transparent = true; m.opacity = c[3]; m.depthWrite = false; }
+      return m;
+    };
+    var v3 = function (p) { return new THREE.Vector3(p[0], p[1], p[2]); };
+    var labels = [];
+    var groupsBox = document.getElementById('groups');
+    document.getElementById('title').textContent = data.title || file;
+    document.title = 'soma — ' + (data.title || file);
+    data.groups.forEach(function (g, gi) {
+      var group = new THREE.Group();
+      (g.tubes || []).forEach(function (t) {
+        var path = new THREE.CatmullRomCurve3(t.p.map(v3), !!t.closed, 'catmullrom', 0);
+        var n = Math.max(2, t.p.length * (t.p.length > 2 ? 4 : 1));
+        if (t.p.length === 2) path = new THREE.LineCurve3(v3(t.p[0]), v3(t.p[1]));
+        group.add(new THREE.Mesh(new THREE.TubeBufferGeometry(path, n, t.r, 12, !!t.closed), material(t.c, true)));
+      });
+      (g.meshes || []).forEach(function (m) {
+        var geo = new THREE.BufferGeometry();
+        geo.setAttribute('position', new THREE.Float32BufferAttribute([].concat.apply([], m.v), 3));
+        geo.setIndex(m.t);
+        geo.computeVertexNormals();
+        group.add(new THREE.Mesh(geo, material(m.c, true)));
+      });
+      (g.points || []).forEach(function (p) {
+        var geo = new THREE.SphereBufferGeometry(p.r, 16, 12), mat = material(p.c, true);
+        p.p.forEach(function (q) { var s = new THREE.Mesh(geo, mat); s.position.copy(v3(q)); group.add(s); });
+      });
+      (g.lines || []).forEach(function (l) {
+        var geo = new THREE.BufferGeometry().setFromPoints(l.p.map(v3));
+        group.add(l.closed ? new THREE.LineLoop(geo, material(l.c, false)) : new THREE.Line(geo, material(l.c, false)));
+      });
+      (g.arrows || []).forEach(function (a) {
+        var from = v3(a.from), d = v3(a.to).sub(from), len = d.length();
+        if (!(len > 0)) return;
+        var head = Math.min(0.25 * len, 6 * a.r);
+        var shaft = new THREE.Mesh(new THREE.CylinderBufferGeometry(a.r, a.r, len - head, 12), material(a.c, true));
+        var cone = new THREE.Mesh(new THREE.ConeBufferGeometry(2.2 * a.r, head, 16), material(a.c, true));
+        var q = new THREE.Quaternion().setFromUnitVectors(new THREE.Vector3(0, 1, 0), d.clone().normalize());
+        shaft.quaternion.copy(q); cone.quaternion.copy(q);
+        shaft.position.copy(from).add(d.clone().multiplyScalar((len - head) / 2 / len));
+        cone.position.copy(from).add(d.clone().multiplyScalar((len - head / 2) / len));
+        group.add(shaft); group.add(cone);
+      });
+      (g.labels || []).forEach(function (l) {
+        var div = document.createElement('div');
+        div.className = 'label';
+        div.textContent = l.text;
+        div.style.color = colour(l.c).getStyle();
+        document.getElementById('labels').appendChild(div);
+        labels.push({ at: v3(l.at), div: div, group: group });
+      });
+      scene.add(group);
+      var box = document.createElement('label');
+      box.innerHTML = '<input type="checkbox" checked> ';
+      box.appendChild(document.createTextNode(g.name));
+      box.firstChild.id = 'group-' + gi;
+      box.firstChild.addEventListener('change', function (ev) { group.visible = ev.target.checked; draw(); });
+      groupsBox.appendChild(box);
+    });
+    var controls = new THREE.OrbitControls(camera, renderer.domElement);
+    controls.target.copy(centre);
+    controls.update();
+    var showLabels = document.getElementById('show-labels');
+    function draw() {
+      renderer.render(scene, camera);
+      labels.forEach(function (l) {
+        var p = l.at.clone().project(camera);
+        var on = showLabels.checked && l.group.visible && p.z < 1;
+        l.div.style.display = on ? '' : 'none';
+        if (on) {
+          l.div.style.left = ((p.x + 1) / 2 * view.clientWidth + 4) + 'px';
+          l.div.style.top = ((1 - p.y) / 2 * view.clientHeight - 16) + 'px';
+        }
+      });
+    }
+    controls.addEventListener('change', draw);
+    showLabels.addEventListener('change', draw);
+    window.addEventListener('resize', function () {
+      renderer.setSize(view.clientWidth, view.clientHeight);
+      camera.aspect = view.clientWidth / view.clientHeight;
+      camera.updateProjectionMatrix();
+      draw();
+    });
+    draw();
+    // For the browser test: how many pixels differ from the white background.
+    var gl = renderer.getContext(), w = gl.drawingBufferWidth, h = gl.drawingBufferHeight;
+    var px = new Uint8Array(w * h * 4), ink = 0;
+    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, px);
+    for (var i = 0; i < px.length; i += 4) if (px[i] < 240 || px[i + 1] < 240 || px[i + 2] < 240) ++ink;
+    document.documentElement.setAttribute('data-ink', String(ink));
+    document.documentElement.setAttribute('data-groups', String(data.groups.length));
+    document.documentElement.setAttribute('data-ready', 'drawn');
+  };
+  var s = document.createElement('script');
+  s.src = file;
+  s.onerror = function () { fail('cannot load ' + file); };
+  document.body.appendChild(s);
+})();
+</script></body></html>
+)html";
+
 }  // namespace soma::studies::detail

@@ -354,11 +354,13 @@ SourceIndex indexSources(const fs::path& root, const std::vector<std::string>& s
           for (const auto& label : opens[k].second) note(file, label, b.lineAt(from), seg, segIds, true);
         }
         // Further E-labels that open no entry are mentions.
-        for (const auto& [pos, label] : eLabels(b.text))
+        for (const auto& [pos, label] : eLabels(b.text)) {
+          const std::string& l = label;  // (a structured binding cannot be captured before C++20 in clang 14)
           if (std::none_of(opens.begin(), opens.end(), [&](const auto& o) {
-                return std::find(o.second.begin(), o.second.end(), label) != o.second.end();
+                return std::find(o.second.begin(), o.second.end(), l) != o.second.end();
               }))
             note(file, label, b.lineAt(pos), b.text, named, false);
+        }
       } else {
         for (const auto& [pos, label] : eLabels(b.text))
           note(file, label, b.lineAt(pos), b.text, named, b.errataSection);

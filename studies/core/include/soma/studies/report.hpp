@@ -62,8 +62,9 @@ std::string reportHtml(const ReportInfo& info, const std::vector<StudyResult>& r
                        const std::filesystem::path& reportDir = {},
                        const std::vector<ReportSection>& sections = {});
 
-/// Write dir/index.html, dir/report.json and dir/lunr.min.js (Debian's libjs-lunr, when installed)
-/// (creating dir). Throws std::runtime_error naming the path on an I/O failure.
+/// Write dir/index.html, dir/report.json, dir/lunr.min.js (Debian's libjs-lunr) and the 3-D viewer
+/// dir/viewer.html with three.min.js and OrbitControls.js (libjs-three), each when installed
+/// (creating dir); a figure X.png with X.scene.js beside it gets a "3-D view" link. Throws std::runtime_error naming the path on an I/O failure.
 void writeReport(const std::filesystem::path& dir, const ReportInfo& info,
                  const std::vector<StudyResult>& results,
                  const std::vector<ReportSection>& sections = {});
