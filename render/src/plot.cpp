@@ -233,7 +233,8 @@ Scene plotScene(const Plot& plot, int width, int height, Camera* camera, PlotFra
 
   // Plot area in pixels (world units; y up); a colour bar takes a column at the right.
   const double colorBarW = plot.colorBar ? 150 : 0;
-  const double left = 120, bottom = plot.x.label.empty() ? 60 : 100;
+  const double left = 120;
+  double bottom = plot.x.label.empty() ? 60 : 100;
   double right = width - 40 - colorBarW;
   const double fullTop = height - (plot.title.empty() ? 30 : 70) - (plot.y.label.empty() ? 0 : 36);
   double top = fullTop;
@@ -343,12 +344,18 @@ Scene plotScene(const Plot& plot, int width, int height, Camera* camera, PlotFra
           xr0 = cx, yTop = cy, placed = true;
           break;
         }
-    if (!placed) {  // outside: the plot area gives up the legend's width
+    if (!placed && legendW < 0.3 * width) {  // outside on the right: the plot area gives up its width
       right = std::min(right, fullRight - legendW - 24);
-      if (right - left < 80) invalid("the legend leaves no room for the plot");
       fitArea();
       xr0 = right + 16 + legendW;
       yTop = top;
+      legendInside = false;
+    } else if (!placed) {  // a wide legend: outside below the x axis label, the area gives up its height
+      yTop = legendH + 10;  // at the image's foot; the ticks and the x label move up above it
+      bottom += legendH + 16;
+      if (top - bottom < 80) invalid("the legend leaves no room for the plot");
+      fitArea();
+      xr0 = std::min(fullRight - 8, (left + fullRight + legendW) / 2);
       legendInside = false;
     }
   }

@@ -279,6 +279,24 @@ TEST_CASE("plot: the legend is placed where no data lies under it", "[render][pl
     CHECK(f.legendRight < 900);
     CHECK_FALSE(dataUnderLegend(p, f));
   }
+  SECTION("data everywhere and a wide legend: below the plot area") {
+    Plot p;
+    std::vector<double> xs, ys;
+    for (int i = 0; i <= 30; ++i)
+      for (int j = 0; j <= 30; ++j) xs.push_back(i / 30.0), ys.push_back(j / 30.0);
+    auto& s = p.add("a dense grid with a name much longer than a third of the image", xs, ys, palette::blue);
+    s.line = false;
+    s.markers = true;
+    p.x.label = "x";
+    PlotFrame f;
+    plotScene(p, 900, 700, nullptr, &f);
+    REQUIRE(f.legend);
+    CHECK_FALSE(f.legendInside);
+    CHECK(f.legendTop < f.bottom - 60);  // under the ticks and the x label
+    CHECK(f.legendBottom >= 0);
+    CHECK(f.right - f.left > 600);       // the plot keeps its width
+    CHECK_FALSE(dataUnderLegend(p, f));
+  }
   SECTION("random scatters never sit under the legend") {
     std::uint32_t seed = 12345;
     auto next = [&] { return (seed = seed * 1664525u + 1013904223u) / 4294967296.0; };

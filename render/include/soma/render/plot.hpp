@@ -61,7 +61,7 @@ struct PlotCells {
 
 /// The corner of the plot area the legend box prefers. It goes there when no data lies under it,
 /// else to the first free place among the other corners and the middles of the edges, else outside
-/// the plot area on the right (the area narrows): a legend never hides a point, a curve, a text or a
+/// the plot area on the right (the area narrows; below it for a legend wider than 30 % of the image): a legend never hides a point, a curve, a text or a
 /// cell of a map that is not white.
 enum class LegendCorner { TopRight, TopLeft, BottomRight, BottomLeft };
 
