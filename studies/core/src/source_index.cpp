@@ -292,6 +292,7 @@ SourceIndex indexSources(const fs::path& root, const std::vector<std::string>& s
       if (std::find(er.studies.begin(), er.studies.end(), s) == er.studies.end()) er.studies.push_back(s);
   };
 
+  std::map<std::string, SourcePlace> mentioned;
   for (const auto& path : filesUnder(root / "papers", ".md")) {
     const std::string file = relPath(path, root);
     for (const Block& b : blocks(readLines(path))) {
@@ -302,8 +303,8 @@ SourceIndex indexSources(const fs::path& root, const std::vector<std::string>& s
                     first.end());
         if (ids.count(first) && !index.papers.count(first)) index.papers[first] = {file, b.line};
       }
-      for (const auto& s : named)
-        if (!index.papers.count(s)) index.papers[s] = {file, b.line};
+      for (const auto& s : named)  // a mention: used only where no table row starts with the ID
+        if (!mentioned.count(s)) mentioned[s] = {file, b.line};
 
       if (!b.row.empty()) {
         // A table row: its E-labels; a numbered label in an "erratum"/"#" column.
@@ -367,6 +368,7 @@ SourceIndex indexSources(const fs::path& root, const std::vector<std::string>& s
       }
     }
   }
+  for (const auto& [id, place] : mentioned) index.papers.try_emplace(id, place);
   // Natural order of the labels: E2.1 < E2.10 < E10.1; the SB-E… labels after the E… ones.
   auto key = [](const std::string& l) {
     std::vector<long> k{l.rfind("E", 0) == 0 ? 0L : 1L};

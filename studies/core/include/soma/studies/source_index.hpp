@@ -24,7 +24,7 @@ struct Erratum {
 
 struct SourceIndex {
   std::map<std::string, SourcePlace> code;    ///< study ID → the line of its ID literal in studies/
-  std::map<std::string, SourcePlace> papers;  ///< study ID → its row (first mention) in papers/
+  std::map<std::string, SourcePlace> papers;  ///< study ID → the table row it starts (else its first mention) in papers/
   std::vector<Erratum> errata;                ///< in file order, then order of appearance
 };
 
