@@ -15,6 +15,8 @@ packages=(
   # the Python module (python/, issue 23), its tests and notebooks (tests/python/, examples/python/)
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-mpmath python3-pytest
   python3-matplotlib python3-nbclient python3-nbformat python3-ipykernel
+  # the report's browser tests, search and 3-D viewer (issue 25)
+  chromium libjs-lunr libjs-three
 )
 missing=()
 for p in "${packages[@]}"; do

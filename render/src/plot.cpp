@@ -216,17 +216,147 @@ Scene plotScene(const Plot& plot, int width, int height, Camera* camera, PlotFra
   axisRange(plot.x, xr, x0, x1, "x", margin);
   axisRange(plot.y, yr, y0, y1, "y", margin);
 
-  // Plot area in pixels (world units; y up).
-  const double left = 120, right = width - 40, bottom = plot.x.label.empty() ? 60 : 100;
-  const double top = height - (plot.title.empty() ? 30 : 70) - (plot.y.label.empty() ? 0 : 36);
-  if (plot.equalAspect) {  // widen the range that has fewer pixels per unit
+  // The legend's entries and box size (placed below, once the plot area is known).
+  struct Entry {
+    std::string name;
+    Color c;
+    bool swatch, dashed, marker, line;
+  };
+  std::vector<Entry> entries;
+  for (const PlotSeries& s : plot.series)
+    if (!s.name.empty()) entries.push_back({s.name, s.c, false, s.dashed, s.markers, s.line});
+  for (const auto& [name, c] : plot.legendSwatches) entries.push_back({name, c, true, false, false, false});
+  const double legendRow = 28;
+  int legendChars = 0;
+  for (const Entry& e : entries) legendChars = std::max(legendChars, codepoints(e.name));
+  const double legendW = 0.56 * 19 * legendChars + 70, legendH = legendRow * double(entries.size()) + 12;
+
+  // Plot area in pixels (world units; y up); a colour bar takes a column at the right.
+  const double colorBarW = plot.colorBar ? 150 : 0;
+  const double left = 120;
+  double bottom = plot.x.label.empty() ? 60 : 100;
+  double right = width - 40 - colorBarW;
+  const double fullTop = height - (plot.title.empty() ? 30 : 70) - (plot.y.label.empty() ? 0 : 36);
+  double top = fullTop;
+  const double rx0 = x0, rx1 = x1, ry0 = y0, ry1 = y1, fullRight = right;
+  const bool xFixed = !std::isnan(plot.x.min) && !std::isnan(plot.x.max);
+  const bool yFixed = !std::isnan(plot.y.min) && !std::isnan(plot.y.max);
+  auto fitArea = [&] {
+    x0 = rx0, x1 = rx1, y0 = ry0, y1 = ry1;
+    top = fullTop;
+    if (!plot.equalAspect) return;
+    // Widen the range that has fewer pixels per unit; when the caller fixed both of its limits
+    // (a map that fills its axes), narrow the plot area instead, so the axes fit the data.
     const double sx = (right - left) / (x1 - x0), sy = (top - bottom) / (y1 - y0);
     if (sx > sy) {
-      const double c = (x0 + x1) / 2, h = (right - left) / sy / 2;
-      x0 = c - h, x1 = c + h;
+      if (xFixed) {
+        right = left + (x1 - x0) * sy;
+      } else {
+        const double c = (x0 + x1) / 2, h = (right - left) / sy / 2;
+        x0 = c - h, x1 = c + h;
+      }
     } else {
-      const double c = (y0 + y1) / 2, h = (top - bottom) / sx / 2;
-      y0 = c - h, y1 = c + h;
+      if (yFixed) {
+        top = bottom + (y1 - y0) * sx;
+      } else {
+        const double c = (y0 + y1) / 2, h = (top - bottom) / sx / 2;
+        y0 = c - h, y1 = c + h;
+      }
+    }
+  };
+  fitArea();
+  // The legend goes where no data lies under it: the preferred corner, the other corners, the
+  // middles of the edges; when each of those covers data, outside the plot area on the right.
+  // xr0: the right end of the sample lines; yTop: the top edge of the box.
+  double xr0 = 0, yTop = 0;
+  bool legendInside = true;
+  if (!entries.empty()) {
+    auto covers = [&](double bx0, double by0, double bx1, double by1) {
+      auto px = [&](double fx) { return left + (fx - x0) / (x1 - x0) * (right - left); };
+      auto py = [&](double fy) { return bottom + (fy - y0) / (y1 - y0) * (top - bottom); };
+      auto inside = [&](const Eigen::Vector2d& q) {
+        return q.x() >= bx0 && q.x() <= bx1 && q.y() >= by0 && q.y() <= by1;
+      };
+      for (const PlotSeries& sr : plot.series) {
+        Eigen::Vector2d prev;
+        bool havePrev = false;
+        const std::size_t n = sr.x.size();
+        for (std::size_t k = 0; k < n + (sr.closed && sr.line ? 1 : 0); ++k) {
+          const std::size_t kk = k % std::max<std::size_t>(n, 1);
+          const double fx = fwd(sr.x[kk], plot.x.scale), fy = fwd(sr.y[kk], plot.y.scale);
+          if (!std::isfinite(fx) || !std::isfinite(fy)) {
+            havePrev = false;
+            continue;
+          }
+          const Eigen::Vector2d q(px(fx), py(fy));
+          const bool visible = q.x() >= left && q.x() <= right && q.y() >= bottom && q.y() <= top;
+          // A marker covers its radius around the point.
+          const double r = sr.markers ? sr.markerRadius : 0;
+          if (visible && q.x() >= bx0 - r && q.x() <= bx1 + r && q.y() >= by0 - r && q.y() <= by1 + r) return true;
+          if (sr.line && havePrev) {
+            Eigen::Vector2d a = prev, b = q;
+            if (clip(a, b, left, right, bottom, top) && clip(a, b, bx0, bx1, by0, by1)) return true;
+          }
+          prev = q;
+          havePrev = true;
+        }
+      }
+      for (const PlotText& t : plot.texts) {
+        const double fx = fwd(t.x, plot.x.scale), fy = fwd(t.y, plot.y.scale);
+        if (std::isfinite(fx) && std::isfinite(fy) && inside({px(fx), py(fy)})) return true;
+      }
+      // A map's cells are data too, except the white ones (the background: nothing there).
+      for (const PlotCells& c : plot.cells) {
+        const double cx0 = fwd(c.x0, plot.x.scale), cx1 = fwd(c.x1, plot.x.scale);
+        const double cy0 = fwd(c.y0, plot.y.scale), cy1 = fwd(c.y1, plot.y.scale);
+        for (int j = 0; j < c.ny; ++j)
+          for (int i = 0; i < c.nx; ++i) {
+            const Color& col = c.cells[std::size_t(j) * c.nx + i];
+            if (col.a <= 0 || (col.r >= 1 && col.g >= 1 && col.b >= 1)) continue;
+            const double ax = px(cx0 + (cx1 - cx0) * i / c.nx), bx = px(cx0 + (cx1 - cx0) * (i + 1) / c.nx);
+            const double ay = py(cy0 + (cy1 - cy0) * j / c.ny), by = py(cy0 + (cy1 - cy0) * (j + 1) / c.ny);
+            if (std::max(ax, bx) >= bx0 && std::min(ax, bx) <= bx1 && std::max(ay, by) >= by0 && std::min(ay, by) <= by1)
+              return true;
+          }
+      }
+      return false;
+    };
+    const LegendCorner corners[4] = {LegendCorner::TopRight, LegendCorner::TopLeft, LegendCorner::BottomRight,
+                                     LegendCorner::BottomLeft};
+    std::vector<std::pair<double, double>> candidates;  // (xr0, yTop)
+    auto cornerAt = [&](LegendCorner c) {
+      const bool r = c == LegendCorner::TopRight || c == LegendCorner::BottomRight;
+      const bool t = c == LegendCorner::TopRight || c == LegendCorner::TopLeft;
+      return std::pair<double, double>(r ? right - 16 : left + 8 + legendW, t ? top - 8 : bottom + 8 + legendH);
+    };
+    candidates.push_back(cornerAt(plot.legend));
+    for (LegendCorner c : corners)
+      if (c != plot.legend) candidates.push_back(cornerAt(c));
+    const double midX = (left + right + legendW) / 2 - 4, midY = (bottom + top + legendH) / 2;
+    candidates.push_back({midX, top - 8});
+    candidates.push_back({midX, bottom + 8 + legendH});
+    candidates.push_back({right - 16, midY});
+    candidates.push_back({left + 8 + legendW, midY});
+    bool placed = false;
+    if (legendW + 24 < right - left && legendH + 16 < top - bottom)
+      for (const auto& [cx, cy] : candidates)
+        if (!covers(cx - legendW, cy - legendH, cx + 8, cy)) {
+          xr0 = cx, yTop = cy, placed = true;
+          break;
+        }
+    if (!placed && legendW < 0.3 * width) {  // outside on the right: the plot area gives up its width
+      right = std::min(right, fullRight - legendW - 24);
+      fitArea();
+      xr0 = right + 16 + legendW;
+      yTop = top;
+      legendInside = false;
+    } else if (!placed) {  // a wide legend: outside below the x axis label, the area gives up its height
+      yTop = legendH + 10;  // at the image's foot; the ticks and the x label move up above it
+      bottom += legendH + 16;
+      if (top - bottom < 80) invalid("the legend leaves no room for the plot");
+      fitArea();
+      xr0 = std::min(fullRight - 8, (left + fullRight + legendW) / 2);
+      legendInside = false;
     }
   }
   auto X = [&](double fx) { return left + (fx - x0) / (x1 - x0) * (right - left); };
@@ -235,6 +365,9 @@ Scene plotScene(const Plot& plot, int width, int height, Camera* camera, PlotFra
 
   Scene sc;
   sc.title = plot.title;
+  // A title wider than the image is set smaller (DejaVu Sans advances about 0.6 em per character).
+  if (const int n = codepoints(plot.title); n > 0 && 0.6 * sc.titlePixelHeight * n > width - 30)
+    sc.titlePixelHeight = std::max(12.0, (width - 30) / (0.6 * n));
   // Cells (under the curves and the axes; grid lines stay visible over them, to read values by).
   for (const PlotCells& c : plot.cells) {
     Fill f;
@@ -368,26 +501,9 @@ Scene plotScene(const Plot& plot, int width, int height, Camera* camera, PlotFra
     l.offset = {t.dx, t.dy};
     sc.add(l);
   }
-  // Legend in the chosen corner of the plot area, on a translucent white box.
-  struct Entry {
-    std::string name;
-    Color c;
-    bool swatch, dashed, marker, line;
-  };
-  std::vector<Entry> entries;
-  for (const PlotSeries& s : plot.series)
-    if (!s.name.empty()) entries.push_back({s.name, s.c, false, s.dashed, s.markers, s.line});
-  for (const auto& [name, c] : plot.legendSwatches) entries.push_back({name, c, true, false, false, false});
+  // The legend (placed above), on a translucent white box.
   if (!entries.empty()) {
-    const double row = 28;
-    int chars = 0;
-    for (const Entry& e : entries) chars = std::max(chars, codepoints(e.name));
-    const double w = 0.56 * 19 * chars + 70, h = row * double(entries.size()) + 12;
-    const bool rightSide = plot.legend == LegendCorner::TopRight || plot.legend == LegendCorner::BottomRight;
-    const bool topSide = plot.legend == LegendCorner::TopRight || plot.legend == LegendCorner::TopLeft;
-    // xr0: the right end of the sample lines; yTop: the top edge of the box.
-    const double xr0 = rightSide ? right - 16 : left + 8 + w;
-    const double yTop = topSide ? top - 8 : bottom + 8 + h;
+    const double row = legendRow, w = legendW, h = legendH;
     Fill bg;
     bg.c = palette::white.withAlpha(0.88f);
     bg.v = {at(xr0 - w, yTop - h, 50), at(xr0 + 8, yTop - h, 50), at(xr0 + 8, yTop, 50), at(xr0 - w, yTop, 50)};
@@ -423,6 +539,57 @@ Scene plotScene(const Plot& plot, int width, int height, Camera* camera, PlotFra
       sc.add(l);
     }
   }
+  // The colour bar: colorMap(t) from min (t = 0, bottom) to max (t = 1, top), with ticks.
+  double cbLeft = 0, cbRight = 0;
+  if (plot.colorBar) {
+    const PlotColorBar& cb = *plot.colorBar;
+    if (!(std::isfinite(cb.min) && std::isfinite(cb.max) && cb.max > cb.min))
+      invalid("colour bar: min " + std::to_string(cb.min) + " is not below max " + std::to_string(cb.max));
+    if (cb.scale == AxisScale::Log10 && !(cb.min > 0)) invalid("colour bar: a log scale needs min > 0");
+    cbLeft = (legendInside || entries.empty() ? right : xr0 + 8) + 30;
+    cbRight = cbLeft + 26;
+    const double barTop = top - 30;
+    Fill f;
+    const int n = 96;
+    for (int k = 0; k < n; ++k) {
+      const double ya = bottom + (barTop - bottom) * k / n, yb = bottom + (barTop - bottom) * (k + 1) / n;
+      const Color c = colorMap((k + 0.5) / n);
+      const int v = int(f.v.size());
+      f.v.insert(f.v.end(), {at(cbLeft, ya), at(cbRight, ya), at(cbRight, yb), at(cbLeft, yb)});
+      f.vc.insert(f.vc.end(), {c, c, c, c});
+      f.tri.push_back({v, v + 1, v + 2});
+      f.tri.push_back({v, v + 2, v + 3});
+    }
+    sc.add(std::move(f));
+    Polyline frame{{at(cbLeft, bottom), at(cbRight, bottom), at(cbRight, barTop), at(cbLeft, barTop)}, palette::darkGrey, 1.5};
+    frame.closed = true;
+    sc.add(frame);
+    const double f0 = fwd(cb.min, cb.scale), f1 = fwd(cb.max, cb.scale);
+    PlotAxis ax;
+    ax.scale = cb.scale;
+    for (double t : axisTicks(ax, f0, f1, std::max(3, int((barTop - bottom) / 110)))) {
+      const double py = bottom + (t - f0) / (f1 - f0) * (barTop - bottom);
+      sc.add(Polyline{{at(cbRight, py), at(cbRight + 7, py)}, palette::darkGrey, 1.5});
+      Label l;
+      l.at = at(cbRight + 10, py);
+      l.text = tickLabel(t, cb.scale);
+      l.hAlign = HAlign::Left;
+      l.vAlign = VAlign::Middle;
+      l.offset = {0, 0};
+      l.pixelHeight = 17;
+      sc.add(l);
+    }
+    if (!cb.label.empty()) {
+      Label l;
+      l.at = at(cbLeft - 12, barTop + 10);
+      l.text = cb.label;
+      l.hAlign = HAlign::Left;
+      l.vAlign = VAlign::Bottom;
+      l.offset = {0, 0};
+      l.pixelHeight = 18;
+      sc.add(l);
+    }
+  }
   if (camera) {
     const Eigen::Vector3d c(width / 2.0, height / 2.0, 0);
     *camera = Camera::ortho(c + Eigen::Vector3d(0, 0, 500), c, Eigen::Vector3d::UnitY(), double(height));
@@ -431,6 +598,16 @@ Scene plotScene(const Plot& plot, int width, int height, Camera* camera, PlotFra
     auto back = [](double f, AxisScale s) { return s == AxisScale::Log10 ? std::pow(10.0, f) : f; };
     *frameOut = {back(x0, plot.x.scale), back(x1, plot.x.scale), back(y0, plot.y.scale), back(y1, plot.y.scale),
                  left, right, bottom, top, width, height};
+    if (!entries.empty()) {
+      frameOut->legend = true;
+      frameOut->legendInside = legendInside;
+      frameOut->legendLeft = xr0 - legendW;
+      frameOut->legendRight = xr0 + 8;
+      frameOut->legendBottom = yTop - legendH;
+      frameOut->legendTop = yTop;
+    }
+    frameOut->colorBarLeft = cbLeft;
+    frameOut->colorBarRight = cbRight;
   }
   return sc;
 }

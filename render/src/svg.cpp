@@ -99,4 +99,16 @@ void renderPlotSvg(const Plot& plot, const std::filesystem::path& svg, int width
   if (!out) throw std::runtime_error("cannot write " + svg.string());
 }
 
+void renderPlot(const Plot& plot, const std::filesystem::path& file, int width, int height) {
+  if (file.extension() == ".svg") renderPlotSvg(plot, file, width, height);
+  else renderPlotPng(plot, file, width, height);
+}
+
+void renderPlotPngAndSvg(const Plot& plot, const std::filesystem::path& png, int width, int height) {
+  renderPlotPng(plot, png, width, height);
+  std::filesystem::path svg = png;
+  svg.replace_extension(".svg");
+  if (svg != png) renderPlotSvg(plot, svg, width, height);
+}
+
 }  // namespace soma::render

@@ -7,6 +7,7 @@
 #include "soma/algebra/log_accuracy.hpp"
 
 #include "soma/render/render.hpp"
+#include "soma/render/svg.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -72,82 +73,20 @@ template <class S> std::vector<Sample> sweep(const std::vector<double>& deltas, 
 
 // ---- the figure: two log-axis panels drawn as polylines in the z = 0 plane ---------------------
 namespace rd = soma::render;
-struct Panel {
-  double x0, width, height;  // world placement
-  double lo, hi;             // log10 range on the x axis
-  double yMax;               // ulps at the top
-  Eigen::Vector3d at(double logx, double ulps) const {
-    return {x0 + width * (logx - lo) / (hi - lo), height * std::min(ulps, yMax) / yMax, 0};
-  }
-};
-void axes(rd::Scene& scene, const Panel& p, const std::string& xlabel, int yTicks) {
-  rd::Polyline frame;
-  frame.p = {p.at(p.lo, p.yMax), p.at(p.lo, 0), p.at(p.hi, 0)};
-  frame.c = rd::palette::black;
-  frame.width = 2;
-  scene.add(frame);
-  for (int e = int(std::ceil(p.lo)); e <= int(std::floor(p.hi)); e += 2) {
-    rd::Polyline tick;
-    tick.p = {p.at(e, 0), p.at(e, 0) - Eigen::Vector3d(0, 0.08, 0)};
-    tick.width = 2;
-    scene.add(tick);
-    rd::Label l;
-    l.at = p.at(e, 0) - Eigen::Vector3d(0, 0.1, 0);
-    l.text = e == 0 ? "1" : "1e" + std::to_string(e);
-    l.hAlign = rd::HAlign::Center;
-    l.vAlign = rd::VAlign::Top;
-    l.offset = {0, 2};
-    l.pixelHeight = 18;
-    scene.add(l);
-  }
-  for (int k = 0; k <= yTicks; ++k) {
-    const double u = p.yMax * k / yTicks;
-    rd::Polyline tick;
-    tick.p = {p.at(p.lo, u), p.at(p.lo, u) - Eigen::Vector3d(0.08, 0, 0)};
-    tick.width = 2;
-    scene.add(tick);
-    rd::Polyline grid;
-    grid.p = {p.at(p.lo, u), p.at(p.hi, u)};
-    grid.c = rd::palette::lightGrey;
-    grid.width = 1;
-    if (k > 0) scene.add(grid);
-    rd::Label l;
-    l.at = p.at(p.lo, u) - Eigen::Vector3d(0.1, 0, 0);
-    char buf[16];
-    std::snprintf(buf, sizeof buf, "%g", u);
-    l.text = buf;
-    l.hAlign = rd::HAlign::Right;
-    l.vAlign = rd::VAlign::Middle;
-    l.offset = {-2, 0};
-    l.pixelHeight = 18;
-    scene.add(l);
-  }
-  rd::Label xl;
-  xl.at = p.at(0.5 * (p.lo + p.hi), 0) - Eigen::Vector3d(0, 0.55, 0);
-  xl.text = xlabel;
-  xl.hAlign = rd::HAlign::Center;
-  xl.vAlign = rd::VAlign::Top;
-  xl.offset = {0, 0};
-  xl.pixelHeight = 22;
-  scene.add(xl);
-}
-void series(rd::Scene& scene, const Panel& p, const std::vector<Sample>& s, bool byDelta, rd::Color col) {
-  rd::Polyline line;
-  line.c = col;
-  line.width = 2;
-  rd::Points pts;
-  pts.c = col;
-  pts.radius = 0.035;
+/// One scalar's samples as a plot series against θ (byDelta false) or π − θ (true).
+void addSeries(rd::Plot& plot, const std::vector<Sample>& s, bool byDelta, const std::string& name, rd::Color col) {
+  std::vector<double> xs, ys;
   for (const Sample& x : s) {
+    if (byDelta != x.nearPi) continue;
     const double v = byDelta ? x.delta : x.theta;
     if (v <= 0) continue;
-    const double lx = std::log10(v);
-    if (byDelta != x.nearPi || lx < p.lo || lx > p.hi) continue;
-    line.p.push_back(p.at(lx, x.ulps));
-    pts.p.push_back(p.at(lx, x.ulps));
+    xs.push_back(v);
+    ys.push_back(x.ulps);
   }
-  scene.add(line);
-  scene.add(pts);
+  auto& sr = plot.add(name, xs, ys, col);
+  sr.markers = true;
+  sr.markerRadius = 4;
+  sr.width = 2;
 }
 
 void logAccuracy(Context& c) {
@@ -187,46 +126,21 @@ void logAccuracy(Context& c) {
          "from the same quaternion and translation: ω = 2 atan2(|q_v|, q_w) q_v/|q_v|, v = Jl(ω)⁻¹t with Jl by its "
          "power series. Error = max(‖Δω‖∞/‖ω‖∞, ‖Δv‖∞/‖v‖∞)/ε.");
   if (!c.makeFigures()) return;
-  rd::Scene scene;
-  scene.title = "SE(3) log: error in ulps vs θ (left) and vs π − θ (right)";
-  const Panel left{0, 6, 4, -8, 0, 0}, right{7.2, 6, 4, -15, 0, 0};
-  double yMax = 0;
-  for (const auto* s : {&dbl, &f128})
-    for (const Sample& x : *s) yMax = std::max(yMax, x.ulps);
-  yMax = std::max(1.0, std::ceil(yMax));
-  Panel l = left, r = right;
-  l.yMax = r.yMax = yMax;
-  const int yTicks = int(yMax) <= 8 ? int(yMax) : 4;
-  axes(scene, l, "θ (log scale)", yTicks);
-  axes(scene, r, "π − θ (log scale)", yTicks);
-  series(scene, l, dbl, false, rd::palette::blue);
-  series(scene, l, f128, false, rd::palette::vermillion);
-  series(scene, r, dbl, true, rd::palette::blue);
-  series(scene, r, f128, true, rd::palette::vermillion);
-  rd::Label ylab;
-  ylab.at = l.at(l.lo, yMax) + Eigen::Vector3d(0, 0.25, 0);
-  ylab.text = "error (ulps)";
-  ylab.hAlign = rd::HAlign::Center;
-  ylab.pixelHeight = 22;
-  scene.add(ylab);
-  for (int k = 0; k < 2; ++k) {
-    rd::Label key;
-    key.at = r.at(r.hi, yMax) + Eigen::Vector3d(-2.3, -0.35 - 0.4 * k, 0);
-    key.text = k == 0 ? "● double" : "● float128";
-    key.c = k == 0 ? rd::palette::blue : rd::palette::vermillion;
-    key.pixelHeight = 22;
-    key.vAlign = rd::VAlign::Middle;
-    scene.add(key);
+  // Two plots, every scalar the checks name: against θ ∈ [1e-8, 3] and against π − θ near π.
+  for (const bool byDelta : {false, true}) {
+    rd::Plot plot;
+    plot.title = byDelta ? "SE(3) log near π: error in ulps vs π − θ" : "SE(3) log: error in ulps vs θ";
+    plot.x.label = byDelta ? "π − θ (log scale)" : "θ (log scale)";
+    plot.x.scale = rd::AxisScale::Log10;
+    plot.y.label = "normwise error (ulps of the scalar)";
+    plot.y.min = 0;
+    for (int k = 0; k < 4; ++k) addSeries(plot, *all[k], byDelta, names[k], rd::palette::cycle(std::size_t(k)));
+    const std::string file = byDelta ? "GF-4.4-log-accuracy-near-pi.png" : "GF-4.4-log-accuracy.png";
+    rd::renderPlotPngAndSvg(plot, c.figurePath(file), 1200, 760);
+    c.figure(file, std::string("Normwise error of soma's SE3::log in ulps of each scalar type (float, double, long double, "
+                               "float128) against an mpfr reference, for random axes and translations, ") +
+                       (byDelta ? "against π − θ for θ near π." : "against θ ∈ [1e-8, 3]."));
   }
-  rd::RenderOptions opt;
-  opt.width = 1400;
-  opt.height = 700;
-  const Eigen::Vector3d centre(6.5, 1.75, 0);
-  opt.camera = rd::Camera::ortho(centre + Eigen::Vector3d(0, 0, 10), centre, Eigen::Vector3d(0, 1, 0), 7.4);
-  const std::string file = "GF-4.4-log-accuracy.png";
-  rd::renderPng(scene, opt, c.figurePath(file));
-  c.figure(file, "Normwise error of soma's SE3::log in ulps of the scalar type (double blue, float128 vermillion) "
-                 "against an mpfr reference, for random axes and translations: left vs θ ∈ [1e-8, 1], right vs π − θ.");
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include "soma/geometry/cuspidal/cuspidality.hpp"
 #include "soma/geometry/cuspidal/witness6r.hpp"
 #include "soma/render/plot.hpp"
+#include "soma/render/svg.hpp"
 #include "soma/geometry/serial/example_robots.hpp"
 #include "soma/render/render.hpp"
 #include "soma/studies/cuspidal_figures.hpp"
@@ -226,16 +227,19 @@ void cuspidalPostureChange(Context& c) {
 
   if (c.makeFigures()) {
     const std::string name = robot.name();
-    plotJointSpace(r, "Aspects and det J = 0 of the orthogonal arm (1, 2, 1.5, 1, 0)", c.figurePath("gf05_cusp_joint.png"));
+    for (const std::string f : {"gf05_cusp_joint.png", "gf05_cusp_joint.svg"})
+      plotJointSpace(r, "Aspects and det J = 0 of the orthogonal arm (1, 2, 1.5, 1, 0)", c.figurePath(f));
     c.figure("gf05_cusp_joint.png",
              "Joint space (θ2, θ3): the two aspects (det J > 0 blue, < 0 orange), the singular curves and the four "
              "triple-root postures (red).");
-    plotSection(r, "Workspace section of the orthogonal arm: four cusps", c.figurePath("gf05_cusp_section.png"));
+    for (const std::string f : {"gf05_cusp_section.png", "gf05_cusp_section.svg"})
+      plotSection(r, "Workspace section of the orthogonal arm: four cusps", c.figurePath(f));
     c.figure("gf05_cusp_section.png",
              "Images of det J = 0 in (ρ, z): the four cusp points from the degree-12 cusp polynomial (red) and "
              "where the traced image turns back (black dots).");
     if (w.found) {
-      plotWitness(r, "A posture change without singularity (OMPL RRTConnect)", c.figurePath("gf05_cusp_witness.png"));
+      for (const std::string f : {"gf05_cusp_witness.png", "gf05_cusp_witness.svg"})
+        plotWitness(r, "A posture change without singularity (OMPL RRTConnect)", c.figurePath(f));
       c.figure("gf05_cusp_witness.png",
                "The witness: two postures of one point joined inside one aspect; det J keeps its sign.");
       std::vector<JointVector<S>> path;
@@ -284,7 +288,7 @@ void cuspidalPostureChange(Context& c) {
     st.line = false;
     st.markers = true;
     st.markerRadius = 8;
-    render::renderPlotPng(plot, c.figurePath("gf05_cusp_circling.png"), 1000, 1000);
+    render::renderPlotPngAndSvg(plot, c.figurePath("gf05_cusp_circling.png"), 1000, 1000);
     c.figure("gf05_cusp_circling.png",
              "GF Fig. 5.2: a circle of radius 0.02 L about a cusp; a posture continued once around it returns to "
              "the start point in another posture with det J of one sign.");
@@ -351,7 +355,8 @@ void cuspMapStudy(Context& c) {
     }
   c.checkEqual("traced count (image reversals) = map count at 16 sample arms", 16, agree);
   if (c.makeFigures()) {
-    plotCuspMap(m, "Cusp points of orthogonal 3R arms over (a2, a3) = (d3, d4)", c.figurePath("gf05_cusp_map.png"), checks);
+    for (const std::string f : {"gf05_cusp_map.png", "gf05_cusp_map.svg"})
+      plotCuspMap(m, "Cusp points of orthogonal 3R arms over (a2, a3) = (d3, d4)", c.figurePath(f), checks);
     c.figure("gf05_cusp_map.png",
              "Number of cusp points of the orthogonal arms (d2, d3, d4, r2, r3) = (1, a2, a3, 1, 0), 100 × 100 arms "
              "(algebraic, TBB); the numbers are the traced count at 16 sample arms (black dots: it agrees).");
@@ -385,8 +390,8 @@ void workspaceStudy(Context& c) {
                          plan.minSigma, plan.margin, plan.seconds));
   }
   if (c.makeFigures()) {
-    plotReachability(m, boundary, "Reachability of the Verheye arm (OMPL samples per cell)",
-                     c.figurePath("gf05_workspace_reach.png"));
+    for (const std::string f : {"gf05_workspace_reach.png", "gf05_workspace_reach.svg"})
+      plotReachability(m, boundary, "Reachability of the Verheye arm (OMPL samples per cell)", c.figurePath(f));
     c.figure("gf05_workspace_reach.png",
              "Samples per (ρ, z) cell from OMPL's uniform state sampler (log colour), and the images of det J = 0: "
              "they bound the workspace and the 4-posture region (denser: four postures map there).");
@@ -395,12 +400,13 @@ void workspaceStudy(Context& c) {
       const Arm3RFrame<S>& f = r.cusps.frame;
       for (const auto& q : plan.path) trace.push_back(workspaceSection(f, robot, q));
     }
-    plotDexterity(m, boundary, trace, "Dexterity of the Verheye arm (best σmin/σmax per cell)",
-                  c.figurePath("gf05_workspace_dexterity.png"));
+    for (const std::string f : {"gf05_workspace_dexterity.png", "gf05_workspace_dexterity.svg"})
+      plotDexterity(m, boundary, trace, "Dexterity of the Verheye arm (best σmin/σmax per cell)", c.figurePath(f));
     c.figure("gf05_workspace_dexterity.png",
              "Best inverse condition number of the point Jacobian per cell; black: the tool point along the plan.");
     if (plan.found) {
-      plotPathSigma(robot, plan, "σmin along the plan (OMPL RRTConnect)", c.figurePath("gf05_workspace_plan.png"));
+      for (const std::string f : {"gf05_workspace_plan.png", "gf05_workspace_plan.svg"})
+        plotPathSigma(robot, plan, "σmin along the plan (OMPL RRTConnect)", c.figurePath(f));
       c.figure("gf05_workspace_plan.png", "Distance from the singularities along the plan, and the margin asked.");
     }
   }

@@ -2,6 +2,7 @@
 // Shared helpers of the GF §5.3–5.4 studies (planar kinematics). Studies run in double.
 #include "soma/geometry/planar/burmester_synthesis.hpp"
 #include "soma/render/plot.hpp"
+#include "soma/render/svg.hpp"
 #include "soma/studies/study.hpp"
 
 #include <algorithm>

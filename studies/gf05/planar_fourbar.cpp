@@ -289,7 +289,7 @@ void couplerCurves(Context& c) {
   pt("inflection pole", ip, render::palette::bluishGreen, "inflection pole");
   pt("Ball's point", B, render::palette::reddishPurple, "Ball");
   pt("", P, render::palette::blue, "P");
-  render::renderPlotPng(plot, c.figurePath("GF-5.4-coupler-invariants.png"), 1200, 1120);
+  render::renderPlotPngAndSvg(plot, c.figurePath("GF-5.4-coupler-invariants.png"), 1200, 1120);
   c.figure("GF-5.4-coupler-invariants.png",
            "Crank-rocker (ground (0,0)–(3,0), crank 1.2, coupler 2.5, rocker 2.0) at θ₁ = 1: the coupler curve of "
            "P = (0.8, 1.1), the instantaneous centre r where c1c2 and c4c3 meet, the inflection circle through r with the "

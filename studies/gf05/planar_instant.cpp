@@ -248,7 +248,7 @@ void cubic(Context& c) {
     plot.texts.push_back({s.inv.pole()(0), s.inv.pole()(1), "r (node)"});
     plot.texts.push_back({s.c2(0), s.c2(1), "c2"});
     plot.texts.push_back({s.c3(0), s.c3(1), "c3"});
-    render::renderPlotPng(plot, c.figurePath("GF-5.3.4-cubic.png"), 1100, 1000);
+    render::renderPlotPngAndSvg(plot, c.figurePath("GF-5.3.4-cubic.png"), 1100, 1000);
     c.figure("GF-5.3.4-cubic.png",
              "The cubic of stationary curvature of the catalogue 4-bar's coupler motion (node at the pole r, tangents "
              "along ṙ and its normal); the moving pivots c2, c3 lie on it and are the two real Burmester points.");

@@ -127,7 +127,7 @@ void finitePositionSynthesis(Context& c) {
   std::vector<V2> traj;
   for (const auto& p : shown.positions) traj.push_back(p.translation());
   addPoints(plot, "prescribed positions (origin of the moving frame)", traj, render::palette::black, 6);
-  render::renderPlotPng(plot, c.figurePath("GF-5.3.5-centre-point-curves.png"), 1100, 1100);
+  render::renderPlotPngAndSvg(plot, c.figurePath("GF-5.3.5-centre-point-curves.png"), 1100, 1100);
   c.figure("GF-5.3.5-centre-point-curves.png",
            "Five positions from a random crank-rocker: the centre-point curves of {1,2,3,4} and {1,2,3,5} meet at the poles "
            "P12, P13, P23 (spurious, grey), at the circular points at infinity, and at " + std::to_string(pairs.size()) +
@@ -173,7 +173,7 @@ void finitePositionSynthesis(Context& c) {
     p2.texts.push_back({o(0), o(1), std::to_string(i + 1)});
   }
   addPoints(p2, "ground pivots", {pairs[ia].centre, pairs[ib].centre}, render::palette::vermillion, 9);
-  render::renderPlotPng(p2, c.figurePath("GF-5.3.5-synthesized-fourbar.png"), 1100, 1000);
+  render::renderPlotPngAndSvg(p2, c.figurePath("GF-5.3.5-synthesized-fourbar.png"), 1100, 1000);
   c.figure("GF-5.3.5-synthesized-fourbar.png",
            "A 4-bar built from two real Burmester pairs of the five positions, drawn at each prescribed position (colours "
            "1–5; black ticks: the prescribed frames' x axes) on its coupler curve; pose error " +

@@ -6,6 +6,7 @@
 
 #include "soma/render/plot.hpp"
 #include "soma/render/render.hpp"
+#include "soma/render/scene_js.hpp"
 
 namespace soma::studies::gf06 {  // not per-file (SOMA_UNITY_ID): it defines functions other chapter files call
 namespace {
@@ -45,6 +46,8 @@ void draw(Context& c, rd::Scene& scene, const V3& view, const std::string& file,
   fo.height = h;
   fo.orthographic = ortho;
   rd::renderPng(scene, view, fo, c.figurePath(file));
+  // The same scene for the report's 3-D viewer.
+  rd::writeSceneJs(rd::sceneJs(scene), c.figurePath(file.substr(0, file.size() - 4) + ".scene.js"));
   c.figure(file, caption);
 }
 

@@ -9,6 +9,7 @@
 #include "soma/geometry/serial/serial_robot.hpp"
 #include "soma/geometry/study/intersection_ring.hpp"
 #include "soma/render/render.hpp"
+#include "soma/render/scene_js.hpp"
 #include "soma/studies/study.hpp"
 
 #include <fmt/format.h>
@@ -137,6 +138,7 @@ void drawPostures(Context& c, const Robot6R<S>& rows, const SE3<S>& T, const Gen
     o.camera = rd::Camera::lookAt({0, -5, 0}, {0, 0, 0});
     blit(rd::render(head, o), 0, 0);
   }
+  std::vector<std::pair<std::string, rd::Scene>> views;  // the postures together, for the 3-D viewer
   for (std::size_t k = 0; k < qs.size(); ++k) {
     rd::Scene s;
     addArm(s, arm, rows, qs[k], colours[(k / 2) % 8]);
@@ -149,6 +151,7 @@ void drawPostures(Context& c, const Robot6R<S>& rows, const SE3<S>& T, const Gen
     s.title = fmt::format("{}: ({:.1f}, {:.1f}, {:.1f}, {:.1f}, {:.1f}, {:.1f})°", k + 1, qs[k](0) / kDeg,
                           qs[k](1) / kDeg, qs[k](2) / kDeg, qs[k](3) / kDeg, qs[k](4) / kDeg, qs[k](5) / kDeg);
     s.titlePixelHeight = 16;
+    views.emplace_back(s.title, s);
     rd::RenderOptions o;
     o.width = pw;
     o.height = ph;
@@ -162,6 +165,8 @@ void drawPostures(Context& c, const Robot6R<S>& rows, const SE3<S>& T, const Gen
     for (int col = 1; col < cols; ++col) std::fill_n(grid.pixel(col * pw, y), 3, 200);
   const std::string file = "GF-11.5.1-6R-sixteen.png";
   rd::writePng(grid, c.figurePath(file));
+  rd::writeSceneJs(rd::sceneJs(views, fmt::format("The {} real postures of the Manseur–Doty arm for one tool pose", qs.size())),
+                   c.figurePath("GF-11.5.1-6R-sixteen.scene.js"));
   c.figure(file, "The 16 real postures of the Manseur–Doty arm (Wampler–Morgan variant: a = (0.3, 1, 0, 1.5, 0, 0), "
                  "d = (0, 0, 0.2, 0, 0, 0), α = (90°, 1°, 90°, 1°, 90°, 1°)) reaching Manocha & Canny's hand pose, "
                  "seen by one camera: links as tubes (offset d along each joint axis, then the common normal a), "

@@ -7,12 +7,14 @@
 #include "soma/geometry/parallel/stewart_numeric.hpp"
 #include "soma/geometry/study/constraint_quadrics.hpp"
 #include "soma/render/plot.hpp"
+#include "soma/render/svg.hpp"
 #include "soma/render/render.hpp"
 #include "soma/studies/study.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 #include <random>
 
@@ -418,19 +420,24 @@ void speedAccuracy(Context& c) {
     plot.title = "Stewart-Gough forward kinematics: time per platform vs worst residual";
     plot.x.label = "time per platform (s): median to p95";
     plot.x.scale = render::AxisScale::Log10;
-    plot.x.max = 1e3;  // room for the legend
     plot.y.label = "worst leg residual / platform size";
     plot.y.scale = render::AxisScale::Log10;
-    plot.y.max = 1e20;
+    // The y axis fits the residuals: a decade below the smallest positive one (the legend places
+    // itself where it hides no segment).
+    double floorResidual = 1;
+    for (const auto& r : rows)
+      if (r.worst > 0) floorResidual = std::min(floorResidual, r.worst);
+    floorResidual = std::pow(10.0, std::floor(std::log10(floorResidual)) - 1);
+    plot.y.min = floorResidual;
     std::size_t ci = 0;
     for (const auto& r : rows) {
-      const double w = std::max(r.worst, 1e-80);
+      const double w = r.worst > 0 ? r.worst : floorResidual;  // an exact 0 sits on the axis floor
       auto& sr = plot.add(r.method + " " + r.scalar, {r.median, r.p95}, {w, w}, render::palette::cycle(ci++));
       sr.markers = true;
       sr.line = true;
     }
     const std::string f = "SOMA-11.5.4-stewart-speed-accuracy.png";
-    render::renderPlotPng(plot, c.figurePath(f));
+    render::renderPlotPngAndSvg(plot, c.figurePath(f));
     c.figure(f, "Each method and scalar: a segment from the median to the p95 time per platform, at its worst "
                 "residual (log-log).");
   }

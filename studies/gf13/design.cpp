@@ -4,6 +4,7 @@
 #include "gf13/common.hpp"
 
 #include "soma/render/plot.hpp"
+#include "soma/render/svg.hpp"
 
 #include <Eigen/Eigenvalues>
 
@@ -435,7 +436,7 @@ void gaussian(Context& ctx) {
     corr.markers = true;
     pl.add("printed (A₂₂/4)(2ΔΔ'' − 3Δ'²)/Δ² (erratum 11)", ts, kp, rd::Color::hex(0xD55E00)).dashed = true;
     const std::string file = "GF-13.6.3-gaussian-curvature.png";
-    rd::renderPlotPng(pl, ctx.figurePath(file));
+    rd::renderPlotPngAndSvg(pl, ctx.figurePath(file));
     ctx.figure(file, "Gaussian curvature K(θ₂) of the inertia metric of a random 2R (independent of θ₁): the "
                      "Brioschi formula on A and the corrected closed form coincide; the printed formula is the "
                      "curvature of A⁻¹ (erratum 11).");
@@ -604,7 +605,7 @@ void geodesics2R(Context& ctx) {
   st.line = false;
   st.markers = true;
   const std::string file = "GF-13.6.3-geodesics-2R.png";
-  rd::renderPlotPng(pl, ctx.figurePath(file));
+  rd::renderPlotPngAndSvg(pl, ctx.figurePath(file));
   ctx.figure(file, "Free motions of the random 2R of GF-13.6.3 without gravity, from one posture in 16 directions at unit "
                    "kinetic speed: geodesics of the inertia metric A (blue), which bend away from the straight lines of "
                    "the joint coordinates (dashed); their spreading follows the Jacobi equation with the Gaussian curvature K(θ₂).");

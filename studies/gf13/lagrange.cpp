@@ -6,6 +6,7 @@
 
 #include "soma/algebra/screw_bracket.hpp"
 #include "soma/render/plot.hpp"
+#include "soma/render/svg.hpp"
 
 #include <Eigen/Eigenvalues>
 
@@ -135,7 +136,7 @@ void energies(Context& ctx) {
     p.add("implicit midpoint (symplectic), h = 2 ms", ts, em, rd::Color::hex(0xD55E00));
     p.add("RK4 with the printed E_P (erratum 3)", ts, ep, rd::Color::hex(0x009E73)).dashed = true;
     const std::string file = "GF-13.4-energy-per-integrator.png";
-    rd::renderPlotPng(p, ctx.figurePath(file));
+    rd::renderPlotPngAndSvg(p, ctx.figurePath(file));
     ctx.figure(file, "Energy error of the free PUMA 560 (τ = 0, gravity) over 10 s: RK4 (order 4) drifts slowly, the "
                      "symplectic implicit midpoint rule (order 2) oscillates without drift, and E_K plus the printed "
                      "potential energy (erratum 3) is not conserved at all.");

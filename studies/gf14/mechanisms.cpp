@@ -6,6 +6,7 @@
 #include "gf14/common.hpp"
 
 #include "soma/render/plot.hpp"
+#include "soma/render/svg.hpp"
 
 namespace soma::studies::gf14::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
@@ -160,7 +161,7 @@ void fourBarEom(Context& ctx) {
   mk.markers = true;
   p.legend = rd::LegendCorner::TopRight;
   const std::string file = "GF-14.4-torque-curve.png";
-  rd::renderPlotPng(p, ctx.figurePath(file));
+  rd::renderPlotPngAndSvg(p, ctx.figurePath(file));
   ctx.figure(file, "Driving torque of the crank–rocker over one revolution at constant crank speed: the book's α equation with the "
                    "corrected α₁ (line) agrees with the Lagrange-multiplier solution of the 3-D tree (dots); the printed α₁ (dashed) does not.");
 }
@@ -301,7 +302,7 @@ void bipedFootForce(Context& ctx) {
   }
   p.legend = rd::LegendCorner::TopRight;
   const std::string file = "GF-14.5-foot-force.png";
-  rd::renderPlotPng(p, ctx.figurePath(file));
+  rd::renderPlotPngAndSvg(p, ctx.figurePath(file));
   ctx.figure(file, "Vertical ankle forces while the hip moves over the left foot (minimum-norm joint torques): the right foot's force, "
                    "computed by the full multiplier system and by the book's dual velocities α (corrected, erratum 10), falls to zero "
                    "— the foot would lift off there — while the left foot takes the weight.");
@@ -513,7 +514,7 @@ void figure142(Context& ctx) {
   pl.texts.push_back({0.25, 0.05, "θ₁", rd::Color::hex(0x0072B2), 20});
   pl.legend = rd::LegendCorner::BottomRight;
   const std::string file = "GF-14-fig-14.2.png";
-  rd::renderPlotPng(pl, ctx.figurePath(file));
+  rd::renderPlotPngAndSvg(pl, ctx.figurePath(file));
   ctx.figure(file, "Fig. 14.2 redrawn: joint 1 at the origin, joint 4 at (d₄, 0), crank at θ₁ = 1 rad with the coupler and rocker "
                    "closing the loop; grey: postures every 30°, dashed: the path of joint 3. The torque curve is GF-14.4-torque-curve.png.");
 }
@@ -556,7 +557,7 @@ void figure143(Context& ctx) {
   pl.add("ground", {-0.6, 0.6}, {-0.04, -0.04}, rd::Color::hex(0x555555)).width = 3;
   pl.legend = rd::LegendCorner::TopRight;
   const std::string file = "GF-14-fig-14.3.png";
-  rd::renderPlotPng(pl, ctx.figurePath(file));
+  rd::renderPlotPngAndSvg(pl, ctx.figurePath(file));
   ctx.figure(file, "Fig. 14.3 redrawn: the seven-link planar biped with both feet on the ground (ankles pinned), at the start of the "
                    "weight shift and where the right foot's vertical force reaches zero (GF-14.5-foot-force.png).");
 }
@@ -615,7 +616,7 @@ void figure144(Context& ctx) {
   pl.legend = rd::LegendCorner::TopLeft;
   pl.y.max = 1.5;  // room above the platform for the legend
   const std::string file = "GF-14-fig-14.4.png";
-  rd::renderPlotPng(pl, ctx.figurePath(file));
+  rd::renderPlotPngAndSvg(pl, ctx.figurePath(file));
   ctx.figure(file, "Fig. 14.4 redrawn (oblique projection): the platform (blue) on six legs; leg 1 highlighted with its lower part L1 "
                    "(ball joint on the ground at L1) and its upper part U1 (2-dof joint on the platform at U1), sliding on each other.");
 }

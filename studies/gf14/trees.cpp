@@ -5,6 +5,7 @@
 #include "gf14/common.hpp"
 
 #include "soma/render/plot.hpp"
+#include "soma/render/svg.hpp"
 
 namespace soma::studies::gf14::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
@@ -353,7 +354,7 @@ void figure141(Context& ctx) {
   a.width = 3;
   p.legend = rd::LegendCorner::TopLeft;
   const std::string file = "GF-14-fig-14.1.png";
-  rd::renderPlotPng(p, ctx.figurePath(file));
+  rd::renderPlotPngAndSvg(p, ctx.figurePath(file));
   ctx.figure(file, "Fig. 14.1 rebuilt from the parent list (0, 1, 1, 3, 3, 4): root 1 on the ground, links 2, 3 on 1, 4, 5 on 3, 6 on 4; "
                    "the dashed path is the ancestry (1, 3, 4, 6) used for K₆ and q̇₆.");
 }

@@ -6,6 +6,7 @@
 #include "gf15/common.hpp"
 
 #include "soma/render/plot.hpp"
+#include "soma/render/svg.hpp"
 
 namespace soma::studies::gf15::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
@@ -322,7 +323,7 @@ struct Diagram {
     plot.x.ticks = {-100};
     plot.y.ticks = {-100};
     plot.equalAspect = true;
-    rd::renderPlotPng(plot, ctx.figurePath(file), 1500, 800);
+    rd::renderPlotPngAndSvg(plot, ctx.figurePath(file), 1500, 800);
     ctx.figure(file, caption);
   }
 };

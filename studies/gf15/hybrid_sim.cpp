@@ -13,6 +13,7 @@
 #include "soma/geometry/dynamics/free_body.hpp"
 #include "soma/geometry/dynamics/holonomic_constraints.hpp"
 #include "soma/render/plot.hpp"
+#include "soma/render/svg.hpp"
 
 namespace soma::studies::gf15::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
@@ -453,7 +454,7 @@ void closedLoop(Context& ctx) {
   label(0.6, 1e-5, "|turn error| (rad, blue) = gain prediction, poles −2, −8 (black dashed)", rd::palette::blue, rd::VAlign::Top);
   label(0.6, 1.5e-7, "|depth error| (m, green)", rd::palette::bluishGreen, rd::VAlign::Top);
   label(0.05, 3e-13, "force error of the full law: |reaction + N₆YᵀYW_d| (N, N m), rounding", rd::palette::vermillion, rd::VAlign::Bottom);
-  rd::renderPlotPng(plot, ctx.figurePath("gf15_hybrid_closed_loop.png"), 1300, 800);
+  rd::renderPlotPngAndSvg(plot, ctx.figurePath("gf15_hybrid_closed_loop.png"), 1300, 800);
   ctx.figure("gf15_hybrid_closed_loop.png", "Peg in a vertical hole (cylindrical pair) under the coordinate-free hybrid law: the motion "
                                             "errors decay as the gains predict (poles −2, −8); the hole's reaction from the DAE equals "
                                             "the commanded −N₆YᵀYW_d to rounding, and leaving the second fundamental form N₆II(V,V) out of "

@@ -5,6 +5,7 @@
 
 #include "soma/algebra/clifford/multivector.hpp"
 #include "soma/render/plot.hpp"
+#include "soma/render/svg.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -205,7 +206,7 @@ void equationOfMotion(Context& c) {
     p.add("momentum, Cl(0,6,2), h = 0.05", rc.a.t, clip(rc.a.dP), render::palette::bluishGreen).dashed = true;
     p.add("energy, 6×6, h = 0.025", r6.b.t, clip(r6.b.dE), render::palette::grey);
     const auto file = "SB-6-equation-of-motion-drift.png";
-    render::renderPlotPng(p, c.figurePath(file), 1200, 800);
+    render::renderPlotPngAndSvg(p, c.figurePath(file), 1200, 800);
     c.figure(file, "Relative energy and spatial-momentum error of a free tumbling body integrated with RKMK4 in the "
                    "6×6 screw formulation (solid) and SB's Cl(0,6,2) E-form (dashed), double; the two coincide. "
                    "Halving h lowers the energy error by ~2⁴ (grey).");

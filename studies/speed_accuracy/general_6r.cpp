@@ -7,6 +7,7 @@
 #include "soma/studies/study.hpp"
 
 #include "soma/render/plot.hpp"
+#include "soma/render/svg.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -212,20 +213,25 @@ void tradeoff(Context& ctx) {
     render::Plot plot;
     plot.title = "General 6R: time per pose vs worst residual";
     plot.x.label = "time per pose (s): median to p95";
-    plot.x.max = 10;  // room on the right and top for the legend
-    plot.y.max = 1e20;
     plot.x.scale = render::AxisScale::Log10;
     plot.y.label = "worst residual";
     plot.y.scale = render::AxisScale::Log10;
+    // The y axis fits the residuals: a decade below the smallest positive one (the legend places
+    // itself where it hides no segment).
+    double floorResidual = 1;
+    for (const auto& r : rows)
+      if (r.worst > 0) floorResidual = std::min(floorResidual, r.worst);
+    floorResidual = std::pow(10.0, std::floor(std::log10(floorResidual)) - 1);
+    plot.y.min = floorResidual;
     std::size_t ci = 0;
     for (const auto& r : rows) {
-      const double w = std::max(r.worst, 1e-80);
+      const double w = r.worst > 0 ? r.worst : floorResidual;  // an exact 0 sits on the axis floor
       auto& s = plot.add(r.method + " " + r.scalar, {r.median, r.p95}, {w, w}, render::palette::cycle(ci++));
       s.markers = true;
       s.line = true;
     }
     const std::string f = "SOMA-6R-speed-accuracy.png";
-    render::renderPlotPng(plot, ctx.figurePath(f));
+    render::renderPlotPngAndSvg(plot, ctx.figurePath(f));
     ctx.figure(f, "Each method and scalar: a segment from the median to the p95 time per pose, "
                   "at its worst residual (log-log).");
   }

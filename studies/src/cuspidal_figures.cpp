@@ -2,6 +2,7 @@
 #include "soma/studies/cuspidal_figures.hpp"
 
 #include "soma/render/plot.hpp"
+#include "soma/render/svg.hpp"
 
 #include <fmt/format.h>
 
@@ -110,7 +111,7 @@ void plotJointSpace(const CuspidalAnalysis& r, const std::string& title, const s
   for (int a = 0; a < r.aspectMap.count(); ++a)
     plot.legendSwatches.emplace_back(fmt::format("aspect {} (det J {})", a + 1, r.aspectMap.sign[a] > 0 ? "> 0" : "< 0"),
                                      aspectColor(a, r.aspectMap.sign[a]));
-  render::renderPlotPng(plot, png, 1100, 1000);
+  render::renderPlot(plot, png, 1100, 1000);
 }
 
 void plotSection(const CuspidalAnalysis& r, const std::string& title, const std::filesystem::path& png) {
@@ -173,7 +174,7 @@ void plotSection(const CuspidalAnalysis& r, const std::string& title, const std:
     s.markers = true;
     s.markerRadius = 7;
   }
-  render::renderPlotPng(plot, png, 1100, 1000);
+  render::renderPlot(plot, png, 1100, 1000);
 }
 
 void plotWitness(const CuspidalAnalysis& r, const std::string& title, const std::filesystem::path& png) {
@@ -202,7 +203,7 @@ void plotWitness(const CuspidalAnalysis& r, const std::string& title, const std:
     b.markers = true;
     b.markerRadius = 10;
   }
-  render::renderPlotPng(plot, png, 1100, 1000);
+  render::renderPlot(plot, png, 1100, 1000);
 }
 
 void plotWitness6R(const SerialRobot<double>& robot, const Witness6R& w, const std::string& title,
@@ -309,7 +310,7 @@ void plotCuspMap(const CuspMap& m, const std::string& title, const std::filesyst
       s.markerRadius = 8;
     }
   }
-  render::renderPlotPng(plot, png, 1100, 950);
+  render::renderPlot(plot, png, 1100, 950);
 }
 
 }  // namespace soma::studies

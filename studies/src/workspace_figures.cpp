@@ -2,6 +2,7 @@
 #include "soma/studies/workspace_figures.hpp"
 
 #include "soma/render/plot.hpp"
+#include "soma/render/svg.hpp"
 
 #include <fmt/format.h>
 
@@ -35,8 +36,8 @@ render::PlotCells cellsOf(const WorkspaceMaps& m) {
   return c;
 }
 
-/// The (ρ, z) half-plane of a workspace section: the map's cells, the singular boundary, the legend
-/// where the outer arc leaves room.
+/// The (ρ, z) half-plane of a workspace section: the map's cells (white: no sample), the singular
+/// boundary; the legend places itself where it hides neither (render::LegendCorner).
 render::Plot sectionPlot(const std::string& title, const WorkspaceMaps& m, render::PlotCells cells,
                          const std::vector<std::vector<Eigen::Vector2d>>& boundary) {
   render::Plot plot;
@@ -44,10 +45,10 @@ render::Plot sectionPlot(const std::string& title, const WorkspaceMaps& m, rende
   plot.x.label = "ρ = distance from axis 1";
   plot.y.label = "z along axis 1";
   plot.equalAspect = true;
-  plot.legend = render::LegendCorner::BottomRight;  // the section's outer arc leaves that corner free
+  plot.legend = render::LegendCorner::BottomRight;
   plot.cells.push_back(std::move(cells));
   plot.x.min = 0;
-  plot.x.max = 1.3 * m.rhoMax;  // room for the legend right of the outer arc
+  plot.x.max = m.rhoMax;
   plot.y.min = m.zMin;
   plot.y.max = m.zMax;
   addBoundary(plot, boundary);
@@ -61,20 +62,25 @@ void plotReachability(const WorkspaceMaps& m, const std::vector<std::vector<Eige
   render::PlotCells c = cellsOf(m);
   int maxHits = 1;
   for (int h : m.hits) maxHits = std::max(maxHits, h);
+  const double top = std::max(2, maxHits);  // the colour bar's upper end (a log scale from 1 sample)
   for (int h : m.hits)
-    c.cells.push_back(h == 0 ? render::palette::white
-                             : render::colorMap(std::log1p(double(h)) / std::log1p(double(maxHits))));
+    c.cells.push_back(h == 0 ? render::palette::white : render::colorMap(std::log(double(h)) / std::log(top)));
   render::Plot plot = sectionPlot(title, m, std::move(c), boundary);
-  plot.legendSwatches.emplace_back("1 sample", render::colorMap(0.0));
-  plot.legendSwatches.emplace_back(fmt::format("{} (log scale)", maxHits), render::colorMap(1.0));
-  render::renderPlotPng(plot, png, 1000, 1000);
+  plot.colorBar = render::PlotColorBar{"samples per cell", 1, top, render::AxisScale::Log10};
+  render::renderPlot(plot, png, 1100, 1000);
 }
 
 void plotDexterity(const WorkspaceMaps& m, const std::vector<std::vector<Eigen::Vector2d>>& boundary,
                    const std::vector<Eigen::Vector2d>& pathTrace, const std::string& title,
                    const std::filesystem::path& png) {
   render::PlotCells c = cellsOf(m);
-  for (double d : m.dexterity) c.cells.push_back(d < 0 ? render::palette::white : render::colorMap(std::clamp(d, 0.0, 1.0)));
+  // The colour scale runs from 0 to the best value found (σmin/σmax ≤ 1 but rarely near 1), so the
+  // map uses the whole ramp instead of its dark end.
+  double best = 0;
+  for (double d : m.dexterity) best = std::max(best, d);
+  if (!(best > 0)) best = 1;
+  for (double d : m.dexterity)
+    c.cells.push_back(d < 0 ? render::palette::white : render::colorMap(std::clamp(d / best, 0.0, 1.0)));
   render::Plot plot = sectionPlot(title, m, std::move(c), boundary);
   if (!pathTrace.empty()) {
     std::vector<double> xs, ys;
@@ -82,10 +88,8 @@ void plotDexterity(const WorkspaceMaps& m, const std::vector<std::vector<Eigen::
     auto& s = plot.add("plan (tool point)", xs, ys, render::palette::black);
     s.width = 3;
   }
-  plot.legendSwatches.emplace_back("σmin/σmax 0", render::colorMap(0.0));
-  plot.legendSwatches.emplace_back("0.5", render::colorMap(0.5));
-  plot.legendSwatches.emplace_back("1", render::colorMap(1.0));
-  render::renderPlotPng(plot, png, 1000, 1000);
+  plot.colorBar = render::PlotColorBar{"best σmin/σmax", 0, best};
+  render::renderPlot(plot, png, 1100, 1000);
 }
 
 void plotPathSigma(const SerialRobot<double>& robot, const SafePath& p, const std::string& title,
@@ -106,7 +110,7 @@ void plotPathSigma(const SerialRobot<double>& robot, const SafePath& p, const st
   m.dashed = true;
   m.width = 2.5;
   plot.y.min = 0;
-  render::renderPlotPng(plot, png, 1100, 700);
+  render::renderPlot(plot, png, 1100, 700);
 }
 
 }  // namespace soma::studies

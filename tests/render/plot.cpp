@@ -196,7 +196,9 @@ TEST_CASE("plot: the legend goes to the chosen corner", "[render][plot]") {
   for (const auto corner : {LegendCorner::TopRight, LegendCorner::TopLeft, LegendCorner::BottomRight, LegendCorner::BottomLeft}) {
     Plot p;
     p.legend = corner;
-    p.add("the series", {0, 1}, {0, 1}, palette::blue);
+    p.x.min = p.y.min = 0;
+    p.x.max = p.y.max = 1;
+    p.add("the series", {0.45, 0.55}, {0.5, 0.52}, palette::blue);  // every corner free
     PlotFrame f;
     const Scene s = plotScene(p, 800, 600, nullptr, &f);
     const auto it = std::find_if(s.labels.begin(), s.labels.end(), [](const Label& l) { return l.text == "the series"; });
@@ -209,6 +211,139 @@ TEST_CASE("plot: the legend goes to the chosen corner", "[render][plot]") {
     CHECK(it->at.x() > f.left);
     CHECK(it->at.x() < f.right);
   }
+}
+
+namespace {
+/// Whether any point of the plot's series (its vertices, and its segments sampled every half pixel)
+/// or any text anchor lies inside the legend box: an independent check of the placement.
+bool dataUnderLegend(const Plot& p, const PlotFrame& f) {
+  auto inBox = [&](double x, double y) {
+    return x >= f.legendLeft && x <= f.legendRight && y >= f.legendBottom && y <= f.legendTop && x >= f.left &&
+           x <= f.right && y >= f.bottom && y <= f.top;
+  };
+  for (const PlotSeries& s : p.series)
+    for (std::size_t k = 0; k < s.x.size(); ++k) {
+      const double x = px(f, s.x[k]), y = py(f, s.y[k]);
+      if (inBox(x, y)) return true;
+      if (!s.line || k + 1 == s.x.size()) continue;
+      const double x1 = px(f, s.x[k + 1]), y1 = py(f, s.y[k + 1]);
+      const int n = 2 * int(std::ceil(std::hypot(x1 - x, y1 - y))) + 1;
+      for (int j = 0; j <= n; ++j)
+        if (inBox(x + (x1 - x) * j / n, y + (y1 - y) * j / n)) return true;
+    }
+  for (const PlotText& t : p.texts)
+    if (inBox(px(f, t.x), py(f, t.y))) return true;
+  return false;
+}
+}  // namespace
+
+TEST_CASE("plot: the legend is placed where no data lies under it", "[render][plot][legend]") {
+  SECTION("a curve through the preferred corner moves the legend") {
+    Plot p;
+    p.legend = LegendCorner::TopRight;
+    std::vector<double> xs, ys;
+    for (int k = 0; k <= 100; ++k) xs.push_back(k / 100.0), ys.push_back(std::pow(k / 100.0, 3));  // fills top right
+    p.add("x³", xs, ys, palette::blue);
+    p.add("a point", {0.05}, {0.9}, palette::vermillion).markers = true;  // and one in the top left
+    p.series.back().line = false;
+    PlotFrame f;
+    plotScene(p, 900, 700, nullptr, &f);
+    REQUIRE(f.legend);
+    CHECK(f.legendInside);
+    CHECK_FALSE(dataUnderLegend(p, f));
+  }
+  SECTION("points in every corner: an edge middle") {
+    Plot p;
+    p.add("corners", {0, 1, 0, 1, 0.5}, {0, 0, 1, 1, 0.5}, palette::blue).markers = true;
+    p.series.back().line = false;
+    p.texts.push_back({0.5, 0.5, "centre"});
+    PlotFrame f;
+    plotScene(p, 900, 700, nullptr, &f);
+    REQUIRE(f.legend);
+    CHECK(f.legendInside);
+    CHECK_FALSE(dataUnderLegend(p, f));
+  }
+  SECTION("data everywhere: the legend goes right of the plot area") {
+    Plot p;
+    std::vector<double> xs, ys;
+    for (int i = 0; i <= 30; ++i)
+      for (int j = 0; j <= 30; ++j) xs.push_back(i / 30.0), ys.push_back(j / 30.0);
+    auto& s = p.add("a dense grid", xs, ys, palette::blue);
+    s.line = false;
+    s.markers = true;
+    PlotFrame f;
+    plotScene(p, 900, 700, nullptr, &f);
+    REQUIRE(f.legend);
+    CHECK_FALSE(f.legendInside);
+    CHECK(f.legendLeft > f.right);
+    CHECK(f.legendRight < 900);
+    CHECK_FALSE(dataUnderLegend(p, f));
+  }
+  SECTION("data everywhere and a wide legend: below the plot area") {
+    Plot p;
+    std::vector<double> xs, ys;
+    for (int i = 0; i <= 30; ++i)
+      for (int j = 0; j <= 30; ++j) xs.push_back(i / 30.0), ys.push_back(j / 30.0);
+    auto& s = p.add("a dense grid with a name much longer than a third of the image", xs, ys, palette::blue);
+    s.line = false;
+    s.markers = true;
+    p.x.label = "x";
+    PlotFrame f;
+    plotScene(p, 900, 700, nullptr, &f);
+    REQUIRE(f.legend);
+    CHECK_FALSE(f.legendInside);
+    CHECK(f.legendTop < f.bottom - 60);  // under the ticks and the x label
+    CHECK(f.legendBottom >= 0);
+    CHECK(f.right - f.left > 600);       // the plot keeps its width
+    CHECK_FALSE(dataUnderLegend(p, f));
+  }
+  SECTION("random scatters never sit under the legend") {
+    std::uint32_t seed = 12345;
+    auto next = [&] { return (seed = seed * 1664525u + 1013904223u) / 4294967296.0; };
+    for (int trial = 0; trial < 40; ++trial) {
+      Plot p;
+      p.legend = LegendCorner(trial % 4);
+      std::vector<double> xs, ys;
+      const int n = 5 + trial * 5;
+      for (int k = 0; k < n; ++k) xs.push_back(next()), ys.push_back(next());
+      p.add("scatter", xs, ys, palette::blue).line = trial % 2 == 0;
+      PlotFrame f;
+      plotScene(p, 800, 600, nullptr, &f);
+      INFO("trial " << trial);
+      CHECK_FALSE(dataUnderLegend(p, f));
+    }
+  }
+}
+
+TEST_CASE("plot: a colour bar right of the plot area, labelled from min to max", "[render][plot]") {
+  Plot p;
+  PlotCells c;
+  c.nx = c.ny = 2;
+  c.cells = {colorMap(0), colorMap(0.3), colorMap(0.6), colorMap(1)};
+  p.cells.push_back(c);
+  p.colorBar = PlotColorBar{"σmin/σmax", 0, 0.2};
+  PlotFrame f;
+  const Scene s = plotScene(p, 900, 700, nullptr, &f);
+  CHECK(f.colorBarLeft > f.right);
+  CHECK(f.colorBarRight < 900);
+  auto has = [&](const std::string& t) {
+    return std::any_of(s.labels.begin(), s.labels.end(), [&](const Label& l) { return l.text == t; });
+  };
+  CHECK(has("σmin/σmax"));
+  CHECK(has("0"));
+  CHECK(has("0.2"));
+  p.colorBar = PlotColorBar{"bad", 1, 1};
+  CHECK_THROWS_WITH(plotScene(p, 900, 700), Catch::Contains("colour bar"));
+}
+
+TEST_CASE("plot: a title wider than the image is set smaller", "[render][plot]") {
+  Plot p;
+  p.add("", {0, 1}, {0, 1}, palette::blue);
+  p.title = std::string(120, 'x');
+  const Scene s = plotScene(p, 1000, 700);
+  CHECK(0.6 * s.titlePixelHeight * 120 <= 1000 - 30 + 1e-9);
+  p.title = "short";
+  CHECK(plotScene(p, 1000, 700).titlePixelHeight == Scene().titlePixelHeight);
 }
 
 }  // namespace SOMA_UNITY_ID

@@ -1,5 +1,8 @@
 #include "soma/studies/report.hpp"
 
+#include "report_page.hpp"
+#include "soma/studies/source_index.hpp"
+
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -7,7 +10,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <ctime>
 #include <fstream>
@@ -343,84 +348,11 @@ std::string reportJson(const ReportInfo& info, const std::vector<StudyResult>& r
 // ---- HTML ----------------------------------------------------------------------------------
 namespace {
 
-constexpr std::string_view kCss = R"css(
-:root { --ink:#1d232b; --muted:#5f6b78; --rule:#d9d4c7; --paper:#fbfaf6; --card:#ffffff;
-  --pass:#1f7a45; --pass-bg:#e6f4ea; --fail:#b3261e; --fail-bg:#fdecea; --accent:#2c5c8a; }
-* { box-sizing: border-box; }
-html { background: var(--paper); }
-body { margin: 0; color: var(--ink); font: 15px/1.5 "Charter", "Georgia", "DejaVu Serif", serif; }
-main { max-width: 1180px; margin: 0 auto; padding: 28px 36px 60px; }
-h1, h2, h3 { font-family: "Helvetica Neue", "Liberation Sans", "DejaVu Sans", Arial, sans-serif;
-  font-weight: 600; letter-spacing: -0.01em; }
-h1 { font-size: 26px; margin: 0 0 2px; }
-h2 { font-size: 19px; margin: 34px 0 10px; padding-bottom: 4px; border-bottom: 2px solid var(--ink); }
-h3 { font-size: 15px; margin: 0; font-family: "DejaVu Sans Mono", "Liberation Mono", monospace; }
-a { color: var(--accent); text-decoration: none; }
-a:hover { text-decoration: underline; }
-code, .mono { font-family: "DejaVu Sans Mono", "Liberation Mono", Menlo, monospace; font-size: 12.5px; }
-.subtitle { color: var(--muted); margin: 0 0 18px; font-style: italic; }
-.verdict { display: inline-block; font: 600 14px/1 "DejaVu Sans", Arial, sans-serif;
-  padding: 9px 14px; border-radius: 4px; letter-spacing: .04em; margin-bottom: 14px; }
-.verdict.pass { background: var(--pass-bg); color: var(--pass); border: 1px solid #a8d5b5; }
-.verdict.fail { background: var(--fail-bg); color: var(--fail); border: 1px solid #f0b4ae; }
-table { border-collapse: collapse; }
-table.meta { font-size: 13.5px; margin-bottom: 8px; }
-table.meta th { text-align: left; color: var(--muted); font-weight: normal; padding: 2px 18px 2px 0;
-  vertical-align: top; white-space: nowrap; }
-table.meta td { padding: 2px 0; }
-.counts b.pass { color: var(--pass); } .counts b.fail { color: var(--fail); }
-.failed-list { background: var(--fail-bg); border: 1px solid #f0b4ae; border-left: 5px solid var(--fail);
-  padding: 10px 18px 12px; margin: 18px 0; border-radius: 3px; }
-.failed-list h2 { border: 0; margin: 0 0 6px; color: var(--fail); font-size: 16px; padding: 0; }
-.failed-list ul { margin: 0; padding-left: 18px; }
-.failed-list li { margin: 3px 0; }
-.failed-list .why { color: var(--muted); font-size: 13.5px; }
-nav.toc ol { padding-left: 20px; margin: 0; }
-nav.toc > ol > li { margin: 6px 0; font-weight: 600; }
-nav.toc ul { list-style: none; padding-left: 4px; margin: 3px 0 8px; font-weight: normal; }
-nav.toc ul li { margin: 1px 0; font-size: 14px; }
-nav.toc .tally { color: var(--muted); font-weight: normal; font-size: 13px; margin-left: 6px; }
-nav.toc .id { font-family: "DejaVu Sans Mono", monospace; font-size: 12.5px; }
-.badge { display: inline-block; min-width: 40px; text-align: center; font: 700 11px/1 "DejaVu Sans", Arial,
-  sans-serif; letter-spacing: .06em; padding: 4px 6px; border-radius: 3px; vertical-align: 1px; }
-.badge.pass { background: var(--pass); color: #fff; }
-.badge.fail { background: var(--fail); color: #fff; }
-nav.toc .badge { min-width: 34px; padding: 2px 4px; font-size: 9.5px; margin-right: 6px; }
-.chapter-tally { float: right; font: normal 13px "DejaVu Sans", Arial, sans-serif; color: var(--muted);
-  padding-top: 5px; }
-article.study { background: var(--card); border: 1px solid var(--rule); border-left: 5px solid var(--pass);
-  border-radius: 3px; padding: 12px 16px 10px; margin: 14px 0 18px; }
-article.study.fail { border-color: #f0b4ae; border-left-color: var(--fail); background: #fffafa;
-  box-shadow: 0 0 0 1px #f6d3cf; }
-.study-head { display: flex; align-items: baseline; gap: 10px; flex-wrap: wrap; }
-.study-title { margin: 2px 0 0; font-size: 15.5px; }
-.study-meta { margin: 2px 0 8px; color: var(--muted); font-size: 13px; }
-.error { background: var(--fail-bg); border: 1px solid #f0b4ae; color: var(--fail); padding: 6px 10px;
-  margin: 8px 0; border-radius: 3px; font-size: 13.5px; white-space: pre-wrap; }
-table.checks { width: 100%; font-size: 13px; margin: 6px 0 4px; table-layout: fixed; }
-table.checks th { text-align: left; white-space: nowrap; font: 600 11.5px "DejaVu Sans", Arial, sans-serif; color: var(--muted);
-  text-transform: uppercase; letter-spacing: .04em; border-bottom: 1px solid var(--ink); padding: 4px 6px; }
-table.checks td { border-bottom: 1px solid #ece8de; padding: 5px 6px; vertical-align: top;
-  overflow-wrap: anywhere; }
-table.checks td.num { text-align: right; white-space: nowrap; }
-table.checks td.value { font-family: "DejaVu Sans Mono", "Liberation Mono", monospace; font-size: 11.5px; }
-table.checks tr.fail td { background: var(--fail-bg); }
-table.checks tr.fail td.result { color: var(--fail); font-weight: 700; }
-table.checks td.result { color: var(--pass); font: 700 11px "DejaVu Sans", Arial, sans-serif; text-align: center; }
-table.checks col.c-idx { width: 30px; } table.checks col.c-name { width: 30%; }
-table.checks col.c-err { width: 80px; } table.checks col.c-tol { width: 92px; }
-table.checks col.c-time { width: 70px; } table.checks col.c-res { width: 50px; }
-table.checks td.idx { color: var(--muted); text-align: right; }
-ul.notes { margin: 8px 0 4px; padding-left: 20px; font-size: 14px; }
-ul.notes li { margin: 2px 0; }
-.figures { display: flex; flex-wrap: wrap; gap: 16px; margin: 10px 0 4px; }
-figure { margin: 0; max-width: 100%; }
-figure img { display: block; max-width: 100%; max-height: 520px; border: 1px solid var(--rule); background: #fff; }
-figcaption { font-size: 13px; color: var(--muted); margin-top: 4px; max-width: 560px; }
-.missing { border: 1px dashed var(--rule); color: var(--muted); padding: 18px; font-size: 13px; }
-footer { margin-top: 40px; color: var(--muted); font-size: 12.5px; border-top: 1px solid var(--rule);
-  padding-top: 8px; }
-)css";
+using detail::kReportCss;
+
+constexpr const char* kLunrPath = "/usr/share/javascript/lunr/lunr.min.js";
+constexpr const char* kThreePath = "/usr/share/javascript/three/three.min.js";
+constexpr const char* kOrbitControlsPath = "/usr/share/javascript/three/examples/js/controls/OrbitControls.js";
 
 std::string e(std::string_view s) { return htmlEscape(s); }
 
@@ -476,15 +408,176 @@ std::vector<Chapter> byChapter(const std::vector<StudyResult>& results) {
   return chapters;
 }
 
-void writeStudy(std::ostringstream& h, const StudyResult& r, const ReportInfo& info,
-                const std::filesystem::path& reportDir) {
+/// A file:// address for a path relative to the source tree (links to a study's code and row).
+std::string fileUrl(const std::filesystem::path& root, const std::string& rel) {
+  const std::string p = (root / rel).lexically_normal().generic_string();
+  std::string out = "file://";
+  for (unsigned char c : p) {
+    if (std::isalnum(c) || std::strchr("/-._~", c)) out += static_cast<char>(c);
+    else out += fmt::format("%{:02X}", c);
+  }
+  return out;
+}
+
+/// The erratum label a check names in "fails (erratum X)": "E4.8" as is, "GF11-7" as "E11.7",
+/// a bare number n as "E<chapter>.n" for a GF study and "<prefix>-En" otherwise (SB-E3).
+std::string checkErratumLabel(const std::string& studyId, const std::string& expected) {
+  const std::string key = "(erratum ";
+  const auto at = expected.find(key);
+  if (at == std::string::npos) return {};
+  std::size_t i = at + key.size(), j = i;
+  while (j < expected.size() && expected[j] != ')' && expected[j] != ',' && expected[j] != ' ' &&
+         expected[j] != ';')
+    ++j;
+  std::string x = expected.substr(i, j - i);
+  if (x.empty()) return {};
+  auto digits = [](const std::string& s) {
+    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+  };
+  if (x[0] == 'E') {  // "E4.8", "E4.11-type"
+    std::size_t k = 1;
+    while (k < x.size() && (std::isdigit(static_cast<unsigned char>(x[k])) || x[k] == '.')) ++k;
+    return x.substr(0, k);
+  }
+  if (x.rfind("GF", 0) == 0) {  // "GF11-7"
+    const auto dash = x.find('-');
+    if (dash != std::string::npos && digits(x.substr(2, dash - 2)) && digits(x.substr(dash + 1)))
+      return "E" + std::to_string(std::stoi(x.substr(2, dash - 2))) + "." + x.substr(dash + 1);
+    return x;
+  }
+  if (digits(x)) {
+    if (studyId.rfind("GF-", 0) == 0) {
+      std::size_t k = 3;
+      while (k < studyId.size() && std::isdigit(static_cast<unsigned char>(studyId[k]))) ++k;
+      if (k > 3) return "E" + studyId.substr(3, k - 3) + "." + x;
+    }
+    const auto dash = studyId.find('-');
+    return (dash == std::string::npos ? std::string() : studyId.substr(0, dash) + "-") + "E" + x;
+  }
+  return x;
+}
+
+/// Inline markdown of escaped text: `code` and **bold**.
+std::string inlineMarkdown(std::string_view text) {
+  const std::string s = e(text);
+  std::string out;
+  bool code = false, bold = false;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s[i] == '`') {
+      out += code ? "</code>" : "<code>";
+      code = !code;
+    } else if (!code && s.compare(i, 2, "**") == 0) {
+      out += bold ? "</b>" : "<b>";
+      bold = !bold;
+      ++i;
+    } else {
+      out += s[i];
+    }
+  }
+  if (code) out += "</code>";
+  if (bold) out += "</b>";
+  return out;
+}
+
+std::vector<std::string> tableCells(std::string_view row) {
+  std::vector<std::string> out;
+  std::string cur;
+  std::size_t i = row.find('|');
+  for (++i; i < row.size(); ++i) {
+    if (row[i] == '\\' && i + 1 < row.size() && row[i + 1] == '|') cur += '|', ++i;
+    else if (row[i] == '|') out.push_back(cur), cur.clear();
+    else cur += row[i];
+  }
+  if (cur.find_first_not_of(" \t") != std::string::npos) out.push_back(cur);
+  for (auto& c : out) {
+    const auto b = c.find_first_not_of(" \t"), en = c.find_last_not_of(" \t");
+    c = b == std::string::npos ? std::string() : c.substr(b, en - b + 1);
+  }
+  return out;
+}
+
+bool tableSeparator(std::string_view l) {
+  return l.find("-") != std::string_view::npos && l.find_first_not_of("|-: \t") == std::string_view::npos;
+}
+
+}  // namespace
+
+std::string markdownHtml(std::string_view text) {
+  std::vector<std::string_view> lines;
+  for (std::size_t i = 0; i <= text.size();) {
+    const auto n = text.find('\n', i);
+    const std::size_t end = n == std::string_view::npos ? text.size() : n;
+    lines.push_back(text.substr(i, end - i));
+    i = end + 1;
+    if (n == std::string_view::npos) break;
+  }
+  while (!lines.empty() && lines.back().empty()) lines.pop_back();
+  std::string out;
+  std::string para;
+  auto flush = [&] {
+    const auto b = para.find_first_not_of('\n'), en = para.find_last_not_of('\n');
+    if (b != std::string::npos) out += "<span>" + inlineMarkdown(para.substr(b, en - b + 1)) + "</span>";
+    para.clear();
+  };
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    const std::string_view l = lines[k];
+    const bool table = !l.empty() && l.front() == '|' && k + 1 < lines.size() && tableSeparator(lines[k + 1]);
+    if (!table) {
+      if (!para.empty()) para += '\n';
+      para += l;
+      continue;
+    }
+    flush();
+    out += "<table class=\"md\"><thead><tr>";
+    for (const auto& c : tableCells(l)) out += "<th>" + inlineMarkdown(c) + "</th>";
+    out += "</tr></thead><tbody>\n";
+    k += 2;
+    for (; k < lines.size() && !lines[k].empty() && lines[k].front() == '|'; ++k) {
+      out += "<tr>";
+      for (const auto& c : tableCells(lines[k])) out += "<td>" + inlineMarkdown(c) + "</td>";
+      out += "</tr>\n";
+    }
+    out += "</tbody></table>";
+    --k;
+  }
+  flush();
+  // Line breaks inside a paragraph.
+  std::string result;
+  for (char c : out) result += c == '\n' ? std::string("<br>") : std::string(1, c);
+  return result;
+}
+
+namespace {
+
+/// What the page knows beyond the results: the source index and each study's errata.
+struct Page {
+  const ReportInfo& info;
+  std::filesystem::path reportDir;
+  std::filesystem::path root;
+  SourceIndex src;
+  std::map<std::string, std::vector<std::string>> errataOf;  // study ID → labels
+};
+
+std::string scalarTags(const StudyResult& r) {
+  return std::string(scalarName(r.scalar)) + (r.study->scalarGeneric ? " scalar-generic" : " double-only");
+}
+
+void writeStudy(std::ostringstream& h, const StudyResult& r, const Page& page) {
   const Study& s = *r.study;
   const bool ok = r.passed();
   int checksFailed = 0;
   for (const auto& c : r.checks) checksFailed += c.passed ? 0 : 1;
+  std::string errata;
+  if (auto it = page.errataOf.find(s.id); it != page.errataOf.end())
+    for (const auto& l : it->second) errata += (errata.empty() ? "" : " ") + l;
   h << "<article class=\"study " << (ok ? "pass" : "fail") << "\" id=\"" << e(anchor(s.id))
-    << "\">\n<div class=\"study-head\">" << badge(ok) << "<h3>" << e(s.id) << "</h3></div>\n";
-  h << "<p class=\"study-title\">" << e(s.title) << "</p>\n";
+    << "\" data-id=\"" << e(s.id) << "\" data-chapter=\"" << e(s.chapter.empty() ? "Other" : s.chapter)
+    << "\" data-verdict=\"" << (ok ? "pass" : "fail") << "\" data-source=\"" << e(s.source)
+    << "\" data-scalar=\"" << e(scalarTags(r)) << "\" data-errata=\"" << e(errata) << "\">\n<div class=\"study-head\">"
+    << badge(ok) << "<h3>" << e(s.id) << "</h3>";
+  if (!errata.empty())
+    for (const auto& l : page.errataOf.at(s.id)) h << "<span class=\"tag\">" << e(l) << "</span>";
+  h << "</div>\n<p class=\"study-title\">" << e(s.title) << "</p>\n";
   std::string meta = e(s.source.empty() ? "no source" : s.source);
   meta += " · scalar " + e(scalarLabel(r));
   if (!s.scalarGeneric) meta += " (not scalar-generic: runs in double)";
@@ -492,6 +585,18 @@ void writeStudy(std::ostringstream& h, const StudyResult& r, const ReportInfo& i
   if (checksFailed) meta += fmt::format(", <b style=\"color:var(--fail)\">{} failed</b>", checksFailed);
   meta += " · " + e(formatSeconds(r.seconds));
   h << "<p class=\"study-meta\">" << meta << "</p>\n";
+  const auto code = page.src.code.find(s.id);
+  const auto row = page.src.papers.find(s.id);
+  if (code != page.src.code.end() || row != page.src.papers.end()) {
+    h << "<p class=\"links\">";
+    if (code != page.src.code.end())
+      h << "source <a class=\"code\" href=\"" << e(fileUrl(page.root, code->second.file)) << "\"><code>"
+        << e(code->second.file) << ":" << code->second.line << "</code></a>";
+    if (row != page.src.papers.end())
+      h << "papers <a class=\"paper\" href=\"" << e(fileUrl(page.root, row->second.file)) << "\"><code>"
+        << e(row->second.file) << ":" << row->second.line << "</code></a>";
+    h << "</p>\n";
+  }
   if (!r.error.empty()) h << "<div class=\"error\"><b>Error:</b> " << e(r.error) << "</div>\n";
   if (!r.checks.empty()) {
     h << "<table class=\"checks\"><colgroup><col class=\"c-idx\"><col class=\"c-name\"><col>"
@@ -501,7 +606,7 @@ void writeStudy(std::ostringstream& h, const StudyResult& r, const ReportInfo& i
     int k = 0;
     for (const auto& c : r.checks) {
       h << "<tr class=\"" << (c.passed ? "pass" : "fail") << "\"><td class=\"idx\">" << ++k
-        << "</td><td>" << e(c.name) << "</td><td class=\"value\">" << e(c.expected)
+        << "</td><td class=\"cname\">" << e(c.name) << "</td><td class=\"value\">" << e(c.expected)
         << "</td><td class=\"value\">" << e(c.got) << "</td><td class=\"num mono\">"
         << e(formatShort(c.error)) << "</td><td class=\"num mono\">" << e(formatShort(c.tolerance))
         << "</td><td class=\"num\">" << e(formatSeconds(c.seconds)) << "</td><td class=\"result\">"
@@ -511,7 +616,7 @@ void writeStudy(std::ostringstream& h, const StudyResult& r, const ReportInfo& i
   }
   if (!r.notes.empty()) {
     h << "<ul class=\"notes\">\n";
-    for (const auto& n : r.notes) h << "<li>" << e(n) << "</li>\n";
+    for (const auto& n : r.notes) h << "<li>" << markdownHtml(n) << "</li>\n";
     h << "</ul>\n";
   }
   if (!r.figures.empty()) {
@@ -520,28 +625,120 @@ void writeStudy(std::ostringstream& h, const StudyResult& r, const ReportInfo& i
     for (const auto& f : r.figures) {
       ++k;
       std::error_code ec;
-      const bool present = reportDir.empty() || std::filesystem::exists(reportDir / f.file, ec);
+      const bool present = page.reportDir.empty() || std::filesystem::exists(page.reportDir / f.file, ec);
       h << "<figure>";
-      if (present)
-        h << "<img src=\"" << e(f.file) << "\" alt=\"" << e(f.caption) << "\" loading=\"lazy\">";
-      else
-        h << "<div class=\"missing\">" << (info.figures ? "figure file missing: " : "figures not made (--no-figures): ")
+      if (present) {
+        h << "<a class=\"fig\" href=\"" << e(f.file) << "\" data-caption=\"" << e(f.caption)
+          << "\" title=\"open full size\"><img src=\"" << e(f.file) << "\" alt=\"" << e(f.caption)
+          << "\" loading=\"lazy\"></a>";
+      } else {
+        h << "<div class=\"missing\">" << (page.info.figures ? "figure file missing: " : "figures not made (--no-figures): ")
           << "<code>" << e(f.file) << "</code></div>";
-      h << "<figcaption><b>Figure " << k << ".</b> " << e(f.caption) << "</figcaption></figure>\n";
+      }
+      h << "<figcaption><b>Figure " << k << ".</b> " << e(f.caption);
+      if (present) {
+        h << " <span class=\"fig-links\"><a href=\"" << e(f.file) << "\">full size</a>";
+        // The vector form beside the raster one (render/svg.hpp writes the 2-D plots as SVG).
+        std::filesystem::path svg = f.file;
+        svg.replace_extension(".svg");
+        if (svg.generic_string() != f.file && !page.reportDir.empty() &&
+            std::filesystem::exists(page.reportDir / svg, ec))
+          h << "<a href=\"" << e(svg.generic_string()) << "\">SVG</a>";
+        // The interactive 3-D view of the same scene (render/scene_js.hpp, viewer.html).
+        std::string js = f.file;
+        if (js.size() > 4 && js.compare(js.size() - 4, 4, ".png") == 0) {
+          js = js.substr(0, js.size() - 4) + ".scene.js";
+          if (!page.reportDir.empty() && std::filesystem::exists(page.reportDir / js, ec))
+            h << "<a class=\"view3d\" href=\"viewer.html?scene=" << e(js) << "\">3-D view</a>";
+        }
+        h << "</span>";
+      }
+      h << "</figcaption></figure>\n";
     }
     h << "</div>\n";
   }
   h << "</article>\n";
 }
 
+/// The errata index: every erratum papers/ records, where the book says it, what soma found (the
+/// check that shows the printed form failing, from this run), the study and the papers/ entry.
+void writeErrata(std::ostringstream& h, const Page& page, const std::vector<StudyResult>& results) {
+  std::map<std::string, const StudyResult*> byId;
+  for (const auto& r : results) byId[r.study->id] = &r;
+  h << "<section class=\"errata\" id=\"errata\">\n<h2>Errata index<span class=\"chapter-tally\">"
+    << page.src.errata.size() << " errata in papers/</span></h2>\n";
+  if (page.src.errata.empty()) {
+    h << "<p>No papers/ folder was found under <code>" << e(page.root.string()) << "</code>.</p>\n</section>\n";
+    return;
+  }
+  h << "<p class=\"chapter-summary\">Every erratum the papers/ files record (the catalogue's numbering; a "
+       "numbered list in <code>chNN.md</code> is shown as E<i>NN.n</i>): the entry, the section of the "
+       "book of each study that settles it, and the check of this run that shows the printed form failing "
+       "where the study records one.</p>\n";
+  h << "<table class=\"errata\"><colgroup><col class=\"e-label\"><col class=\"e-where\"><col><col "
+       "class=\"e-found\"><col class=\"e-study\"></colgroup>\n<thead><tr><th>Erratum</th><th>Where</th>"
+       "<th>What papers/ says</th><th>What soma found (this run)</th><th>Study</th></tr></thead>\n<tbody>\n";
+  for (const Erratum& er : page.src.errata) {
+    h << "<tr data-erratum=\"" << e(er.label) << "\"><td class=\"label\">" << e(er.label) << "</td><td>";
+    std::vector<std::string> sections;
+    for (const auto& id : er.studies)
+      if (auto it = byId.find(id); it != byId.end() && !it->second->study->source.empty() &&
+                                   std::find(sections.begin(), sections.end(), it->second->study->source) == sections.end())
+        sections.push_back(it->second->study->source);
+    for (const auto& s : sections) h << e(s) << "<br>";
+    h << "<a href=\"" << e(fileUrl(page.root, er.place.file)) << "\"><code>" << e(er.place.file) << ":"
+      << er.place.line << "</code></a></td><td>" << inlineMarkdown(er.text) << "</td><td>";
+    bool any = false;
+    for (const auto& id : er.studies) {
+      auto it = byId.find(id);
+      if (it == byId.end()) continue;
+      for (const auto& c : it->second->checks)
+        if (checkErratumLabel(id, c.expected) == er.label) {
+          h << (any ? "<br>" : "") << (c.passed ? "" : "<b style=\"color:var(--fail)\">FAIL</b> ") << e(c.name)
+            << ": " << e(c.got) << " (threshold " << e(formatShort(c.tolerance)) << ")";
+          any = true;
+        }
+    }
+    if (!any) h << "<span style=\"color:var(--muted)\">see the study's checks</span>";
+    h << "</td><td>";
+    for (const auto& id : er.studies) {
+      auto it = byId.find(id);
+      if (it == byId.end()) {
+        h << "<code>" << e(id) << "</code> (not run)<br>";
+        continue;
+      }
+      h << badge(it->second->passed()) << " <a href=\"#" << e(anchor(id)) << "\"><code>" << e(id)
+        << "</code></a><br>";
+    }
+    if (er.studies.empty()) h << "<span style=\"color:var(--muted)\">no study named</span>";
+    h << "</td></tr>\n";
+  }
+  h << "</tbody></table>\n</section>\n";
+}
+
 }  // namespace
 
 std::string reportHtml(const ReportInfo& info, const std::vector<StudyResult>& results,
-                       const std::filesystem::path& reportDir) {
+                       const std::filesystem::path& reportDir, const std::vector<ReportSection>& sections) {
   const RunSummary sum = summarize(results);
   const int nStudies = sum.studiesPassed + sum.studiesFailed;
   const int nChecks = sum.checksPassed + sum.checksFailed;
   const auto chapters = byChapter(results);
+  std::vector<std::string> ids;  // every registered study, so that --only still names them all
+  for (const auto& s : registry()) ids.push_back(s.id);
+  for (const auto& r : results)
+    if (std::find(ids.begin(), ids.end(), r.study->id) == ids.end()) ids.push_back(r.study->id);
+  Page page{info, reportDir, sourceRoot(), indexSources(sourceRoot(), ids), {}};
+  auto addErratum = [&](const std::string& id, const std::string& label) {
+    auto& v = page.errataOf[id];
+    if (std::find(v.begin(), v.end(), label) == v.end()) v.push_back(label);
+  };
+  for (const auto& r : results)
+    for (const auto& c : r.checks)
+      if (const std::string l = checkErratumLabel(r.study->id, c.expected); !l.empty()) addErratum(r.study->id, l);
+  for (const auto& er : page.src.errata)
+    for (const auto& id : er.studies) addErratum(id, er.label);
+
   std::ostringstream h;
   const std::string verdict =
       sum.studiesFailed == 0
@@ -550,8 +747,40 @@ std::string reportHtml(const ReportInfo& info, const std::vector<StudyResult>& r
 
   h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
     << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-    << "<title>soma report — " << e(verdict) << "</title>\n<style>" << kCss << "</style>\n"
-    << "</head>\n<body>\n<main>\n<header>\n<h1>soma — reproduction report</h1>\n"
+    << "<title>soma report — " << e(verdict) << "</title>\n<style>" << kReportCss << "</style>\n"
+    << "</head>\n<body>\n";
+
+  // The sidebar: search, filters and the contents (a chapter per collapsible list).
+  h << "<aside class=\"sidebar\">\n<div class=\"brand\">soma report</div>\n<div class=\"filters\">\n"
+    << "<label for=\"f-q\">Search (ID, title, checks, notes)</label><input type=\"search\" id=\"f-q\" "
+       "placeholder=\"e.g. cylindroid, GF-6.5, E4.8\" autocomplete=\"off\">\n"
+    << "<label for=\"f-chapter\">Chapter</label><select id=\"f-chapter\"><option value=\"\">all chapters</option>";
+  for (const auto& c : chapters) h << "<option value=\"" << e(c.name) << "\">" << e(c.name) << "</option>";
+  h << "</select>\n<label for=\"f-verdict\">Verdict</label><select id=\"f-verdict\"><option value=\"\">passed "
+       "and failed</option><option value=\"pass\">passed</option><option value=\"fail\">failed</option></select>\n"
+    << "<label for=\"f-erratum\">Erratum</label><select id=\"f-erratum\"><option value=\"\">any study</option>"
+       "<option value=\"*\">settles an erratum</option></select>\n"
+    << "<label for=\"f-scalar\">Scalar</label><select id=\"f-scalar\"><option value=\"\">any scalar</option></select>\n"
+    << "<button type=\"button\" class=\"clear\" id=\"f-clear\">clear</button>\n"
+    << "<div id=\"match-count\">" << results.size() << " studies</div>\n</div>\n";
+  h << "<nav class=\"toc\">\n<h2>Contents</h2>\n<div class=\"top\"><a href=\"#summary\">Summary</a>";
+  for (const auto& s : sections) h << "<a href=\"#" << e(s.id) << "\">" << e(s.title) << "</a>";
+  h << "<a href=\"#errata\">Errata index (" << page.src.errata.size() << ")</a></div>\n";
+  for (std::size_t k = 0; k < chapters.size(); ++k) {
+    const auto& c = chapters[k];
+    const bool failing = c.passed != static_cast<int>(c.results.size());
+    h << "<details" << (failing ? " open" : "") << "><summary><a href=\"#ch-" << k + 1 << "\">" << e(c.name)
+      << "</a> <span class=\"tally\"><span class=\"shown\">" << c.results.size() << "</span> · " << c.passed
+      << "/" << c.results.size() << " passed</span></summary>\n<ul>\n";
+    for (const StudyResult* r : c.results)
+      h << "<li data-id=\"" << e(r->study->id) << "\">" << badge(r->passed()) << "<a href=\"#"
+        << e(anchor(r->study->id)) << "\" title=\"" << e(r->study->title) << "\"><span class=\"id\">"
+        << e(r->study->id) << "</span></a></li>\n";
+    h << "</ul></details>\n";
+  }
+  h << "</nav>\n</aside>\n<main>\n";
+
+  h << "<header id=\"summary\">\n<h1>soma — reproduction report</h1>\n"
     << "<p class=\"subtitle\">J.M. Selig, <i>Geometric Fundamentals of Robotics</i>: each claim, "
        "soma’s value, the error, the tolerance and what it cost.</p>\n";
   h << "<div class=\"verdict " << (sum.studiesFailed ? "fail" : "pass") << "\">" << e(verdict)
@@ -567,6 +796,8 @@ std::string reportHtml(const ReportInfo& info, const std::vector<StudyResult>& r
                             "class=\"{}\">{} failed</b> of {}</span>",
                             sum.checksPassed, sum.checksFailed ? "fail" : "", sum.checksFailed,
                             nChecks));
+  row("Errata", fmt::format("{} in papers/ (<a href=\"#errata\">index</a>); {} studies settle one",
+                            page.src.errata.size(), page.errataOf.size()));
   row("Total time", e(formatSeconds(info.seconds > 0 ? info.seconds : sum.seconds)));
   row("Scalar", e(info.scalar + (info.mpfrBits > 0 ? fmt::format(" ({} bits)", info.mpfrBits) : "")) +
                     " <span style=\"color:var(--muted)\">(studies that are not scalar-generic run "
@@ -590,37 +821,54 @@ std::string reportHtml(const ReportInfo& info, const std::vector<StudyResult>& r
     h << "</ul>\n</section>\n";
   }
 
-  h << "<nav class=\"toc\">\n<h2>Contents</h2>\n<ol>\n";
-  for (std::size_t k = 0; k < chapters.size(); ++k) {
-    const auto& c = chapters[k];
-    h << "<li><a href=\"#ch-" << k + 1 << "\">" << e(c.name) << "</a><span class=\"tally\">"
-      << c.passed << "/" << c.results.size() << " passed</span>\n<ul>\n";
-    for (const StudyResult* r : c.results)
-      h << "<li>" << badge(r->passed()) << "<a href=\"#" << e(anchor(r->study->id))
-        << "\"><span class=\"id\">" << e(r->study->id) << "</span></a> — " << e(r->study->title)
-        << "</li>\n";
-    h << "</ul></li>\n";
-  }
-  h << "</ol>\n</nav>\n";
+  // Sections a caller adds (ReportSection), then the errata index; hidden while filtering.
+  h << "<div class=\"hide-when-filtering\">\n";
+  for (const auto& s : sections)
+    h << "<section class=\"extra\" id=\"" << e(s.id) << "\">\n<h2>" << e(s.title) << "</h2>\n" << s.html
+      << "\n</section>\n";
+  writeErrata(h, page, results);
+  h << "</div>\n";
 
   for (std::size_t k = 0; k < chapters.size(); ++k) {
     const auto& c = chapters[k];
+    int checks = 0, checksFailed = 0, figures = 0, errata = 0;
+    double seconds = 0;
+    std::map<std::string, int> papers;
+    for (const StudyResult* r : c.results) {
+      checks += static_cast<int>(r->checks.size());
+      for (const auto& ch : r->checks) checksFailed += ch.passed ? 0 : 1;
+      figures += static_cast<int>(r->figures.size());
+      seconds += r->seconds;
+      if (auto it = page.errataOf.find(r->study->id); it != page.errataOf.end()) errata += 1;
+      if (auto it = page.src.papers.find(r->study->id); it != page.src.papers.end()) ++papers[it->second.file];
+    }
     h << "<section class=\"chapter\" id=\"ch-" << k + 1 << "\">\n<h2>" << e(c.name)
       << "<span class=\"chapter-tally\">" << c.passed << " of " << c.results.size()
-      << " passed</span></h2>\n";
-    for (const StudyResult* r : c.results) writeStudy(h, *r, info, reportDir);
+      << " passed</span></h2>\n<p class=\"chapter-summary\"><b>" << c.passed << " of " << c.results.size()
+      << "</b> studies passed · <b>" << checks - checksFailed << " of " << checks << "</b> checks · "
+      << errata << " stud" << (errata == 1 ? "y settles" : "ies settle") << " an erratum · " << figures
+      << " figure" << (figures == 1 ? "" : "s") << " · " << e(formatSeconds(seconds));
+    for (const auto& [file, n] : papers)
+      h << " · <a href=\"" << e(fileUrl(page.root, file)) << "\"><code>" << e(file) << "</code></a>";
+    h << "</p>\n";
+    for (const StudyResult* r : c.results) writeStudy(h, *r, page);
     h << "</section>\n";
   }
   if (results.empty()) h << "<p>No study was run.</p>\n";
   h << "<footer>Generated by soma " << e(info.version) << " on " << e(info.date)
     << ". Expected values come from the book or from an independent method; a check passes when "
-       "its error is at most its tolerance. Data: <a href=\"report.json\">report.json</a>."
-       "</footer>\n</main>\n</body>\n</html>\n";
+       "its error is at most its tolerance. Data: <a href=\"report.json\">report.json</a>. Search: "
+       "lunr.js (MIT licence), copied beside this page."
+       "</footer>\n</main>\n"
+    << "<div id=\"lightbox\" role=\"dialog\"><div class=\"bar\"><button type=\"button\">close (Esc)</button>"
+       "<span class=\"caption\"></span><a class=\"file\" href=\"#\">open the file</a></div><img alt=\"\"></div>\n"
+    << "<script src=\"lunr.min.js\"></script>\n<script>" << detail::kReportScript << "</script>\n"
+    << "</body>\n</html>\n";
   return h.str();
 }
 
 void writeReport(const std::filesystem::path& dir, const ReportInfo& info,
-                 const std::vector<StudyResult>& results) {
+                 const std::vector<StudyResult>& results, const std::vector<ReportSection>& sections) {
   namespace fs = std::filesystem;
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -639,8 +887,23 @@ void writeReport(const std::filesystem::path& dir, const ReportInfo& info,
     fs::rename(tmp, path, ec);
     if (ec) throw std::runtime_error("cannot write '" + path.string() + "': " + ec.message());
   };
+  // The search library beside the page, so that the folder opens from disk without a server
+  // (Debian's libjs-lunr; without it the page falls back to plain substring search).
+  // The 3-D viewer (figures with a .scene.js beside them): Debian's libjs-three and its orbit
+  // controls beside the page.
+  auto copy = [&](const fs::path& from, const std::string& name) {
+    if (!fs::exists(from, ec)) return false;
+    std::ifstream in(from, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    write(name, text.str());
+    return true;
+  };
+  copy(kLunrPath, "lunr.min.js");
+  if (copy(kThreePath, "three.min.js") && copy(kOrbitControlsPath, "OrbitControls.js"))
+    write("viewer.html", std::string(detail::kViewerHtml));
   write("report.json", reportJson(info, results));
-  write("index.html", reportHtml(info, results, dir));
+  write("index.html", reportHtml(info, results, dir, sections));
 }
 
 // ---- terminal ------------------------------------------------------------------------------

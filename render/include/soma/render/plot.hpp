@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -58,8 +59,19 @@ struct PlotCells {
   std::vector<Color> cells;
 };
 
-/// Which corner of the plot area the legend box sits in (pick one the data leaves free).
+/// The corner of the plot area the legend box prefers. It goes there when no data lies under it,
+/// else to the first free place among the other corners and the middles of the edges, else outside
+/// the plot area on the right (the area narrows; below it for a legend wider than 30 % of the image): a legend never hides a point, a curve, a text or a
+/// cell of a map that is not white.
 enum class LegendCorner { TopRight, TopLeft, BottomRight, BottomLeft };
+
+/// A colour bar right of the plot area for cells coloured with colorMap(t): t = 0 is `min`, t = 1
+/// is `max` (on a Log10 scale, t runs along log10 of the value), with ticks and a label.
+struct PlotColorBar {
+  std::string label;
+  double min = 0, max = 1;
+  AxisScale scale = AxisScale::Linear;
+};
 
 struct Plot {
   std::string title;
@@ -72,6 +84,8 @@ struct Plot {
   std::vector<PlotCells> cells;
   /// Extra legend entries drawn as a filled square (e.g. the classes of a map).
   std::vector<std::pair<std::string, Color>> legendSwatches;
+  /// The scale of a map coloured with colorMap (every continuous map has one).
+  std::optional<PlotColorBar> colorBar;
 
   /// Append a curve; returns it for further styling.
   PlotSeries& add(std::string name, std::vector<double> xs, std::vector<double> ys, Color c);
@@ -82,6 +96,10 @@ struct PlotFrame {
   double xmin, xmax, ymin, ymax;      ///< visible range (data units; log axes in data units too)
   double left, right, bottom, top;    ///< plot area in world units = output pixels (y up)
   int width, height;
+  bool legend = false;                ///< a legend was drawn
+  bool legendInside = false;          ///< inside the plot area (else right of it)
+  double legendLeft = 0, legendRight = 0, legendBottom = 0, legendTop = 0;  ///< its box (pixels, y up)
+  double colorBarLeft = 0, colorBarRight = 0;  ///< the colour bar's column (0, 0: none)
 };
 
 /// 1-2-5 tick positions covering [lo, hi] with about `target` intervals.

@@ -17,5 +17,10 @@ std::string sceneSvg(const Scene& scene, int width, int height);
 std::string plotSvg(const Plot& plot, int width = 1200, int height = 800);
 /// Writes plotSvg to `svg` (std::runtime_error when the file cannot be written).
 void renderPlotSvg(const Plot& plot, const std::filesystem::path& svg, int width = 1200, int height = 800);
+/// The plot to `file` by its extension: ".svg" writes SVG, anything else PNG (a CLI's --png/--svg).
+void renderPlot(const Plot& plot, const std::filesystem::path& file, int width = 1200, int height = 800);
+/// A figure in both forms: the PNG at `png` and the SVG beside it (same stem, ".svg"), the vector
+/// file the report links next to the raster one.
+void renderPlotPngAndSvg(const Plot& plot, const std::filesystem::path& png, int width = 1200, int height = 800);
 
 }  // namespace soma::render

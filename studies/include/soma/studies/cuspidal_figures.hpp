@@ -1,6 +1,7 @@
 #pragma once
 // Figures of the cuspidality analysis (analyseCuspidality, soma/geometry/cuspidal/cuspidality.hpp):
-// the joint space, the workspace section, the witness path, and the cusp-count map.
+// the joint space, the workspace section, the witness path, and the cusp-count map. Each writes
+// `png` as PNG, or as SVG when its extension is ".svg" (render::renderPlot).
 #include "soma/geometry/cuspidal/cuspidality.hpp"
 #include "soma/geometry/cuspidal/parameter_map.hpp"
 

@@ -1,6 +1,7 @@
 #pragma once
 // Figures of the workspace analysis (analyseWorkspace, soma/geometry/cuspidal/workspace_analysis.hpp):
-// reachability and dexterity maps with the singular boundary, σmin along a plan.
+// reachability and dexterity maps (with colour bars) and the singular boundary, σmin along a plan.
+// Each writes `png` as PNG, or as SVG when its extension is ".svg" (render::renderPlot).
 #include "soma/geometry/cuspidal/workspace_analysis.hpp"
 
 #include <filesystem>

@@ -1,6 +1,6 @@
 #pragma once
 // The three renderings of study results (DESIGN §4, §6): an aligned text table for the terminal
-// (`soma study run`), report.json and a self-contained index.html (`soma report`).
+// (`soma study run`), report.json and a self-contained report folder (`soma report`).
 #include "soma/studies/runner.hpp"
 #include "soma/studies/study.hpp"
 
@@ -44,15 +44,34 @@ std::string studyJson(const StudyResult& r, int indent = 2);
 /// A non-finite error/tolerance is written as null.
 std::string reportJson(const ReportInfo& info, const std::vector<StudyResult>& results);
 
-/// index.html: one self-contained page (inline CSS, no script). `reportDir` is used only to
-/// mark figures whose file is missing.
-std::string reportHtml(const ReportInfo& info, const std::vector<StudyResult>& results,
-                       const std::filesystem::path& reportDir = {});
+/// A section of index.html that a caller adds (e.g. "Speed vs accuracy"): placed after the summary,
+/// before the errata index, and listed at the top of the contents. `id` is its HTML anchor;
+/// `html` is trusted markup (build it with htmlEscape and markdownHtml).
+struct ReportSection {
+  std::string id;
+  std::string title;
+  std::string html;
+};
 
-/// Write dir/index.html and dir/report.json (creating dir). Throws std::runtime_error naming the
-/// path on an I/O failure.
+/// index.html: one page (inline CSS and script; lunr.min.js beside it) with a sidebar (search,
+/// filters by chapter, verdict, erratum and scalar; the contents by chapter), the summary, the
+/// caller's sections, the errata index of papers/, and per chapter its summary and studies (links to
+/// each study's source line and papers/ row; figures open full size). `reportDir` is used only to
+/// mark figures whose file is missing and to link an SVG beside a PNG.
+std::string reportHtml(const ReportInfo& info, const std::vector<StudyResult>& results,
+                       const std::filesystem::path& reportDir = {},
+                       const std::vector<ReportSection>& sections = {});
+
+/// Write dir/index.html, dir/report.json, dir/lunr.min.js (Debian's libjs-lunr) and the 3-D viewer
+/// dir/viewer.html with three.min.js and OrbitControls.js (libjs-three), each when installed
+/// (creating dir); a figure X.png with X.scene.js beside it gets a "3-D view" link. Throws std::runtime_error naming the path on an I/O failure.
 void writeReport(const std::filesystem::path& dir, const ReportInfo& info,
-                 const std::vector<StudyResult>& results);
+                 const std::vector<StudyResult>& results,
+                 const std::vector<ReportSection>& sections = {});
+
+/// A note's markdown as HTML: tables (a header row, a |---| row, body rows) become <table class="md">,
+/// `code` and **bold** inline; other lines are escaped text with line breaks.
+std::string markdownHtml(std::string_view text);
 
 struct TextOptions {
   std::filesystem::path outDir;    ///< figure paths are printed relative to this directory
