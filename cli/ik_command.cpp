@@ -39,6 +39,8 @@ int ikImpl(const std::filesystem::path& file, const std::string& tip, const std:
   bool ok = true;
   for (const auto& r : sol.residuals)
     if (!(r <= Tolerance<S>::sqrtEpsilon())) ok = false;
+  // docs/cli.md: 1 a residual above its bound, 3 no posture (the reason says why), else 0.
+  const int exitCode = !ok ? 1 : sol.count() == 0 ? 3 : 0;
   if (json) {
     nlohmann::json j;
     j["robot"] = file.string();
@@ -52,7 +54,12 @@ int ikImpl(const std::filesystem::path& file, const std::string& tip, const std:
     j["seconds"] = sol.seconds;
     j["expected_count"] = sol.expected_count;
     j["count"] = sol.count();
+    j["certified"] = sol.certified;
     j["continuum"] = sol.continuum;
+    if (sol.generic_rank >= 0) j["generic_rank"] = sol.generic_rank;
+    if (sol.self_motion_dimension > 0) j["self_motion_dimension"] = sol.self_motion_dimension;
+    if (!sol.elimination.empty()) j["elimination"] = sol.elimination;
+    if (!sol.reason.empty()) j["reason"] = sol.reason;
     j["notes"] = sol.notes;
     nlohmann::json arr = nlohmann::json::array();
     for (std::size_t k = 0; k < sol.count(); ++k) {
@@ -62,12 +69,18 @@ int ikImpl(const std::filesystem::path& file, const std::string& tip, const std:
     }
     j["solutions"] = arr;
     out << jsonText(j) << "\n";
-    return ok ? 0 : 1;
+    return exitCode;
   }
   out << fmt::format("robot: {} ({} joints)   method: {}   scalar: {}{}\n", rf.robot.name(), rf.robot.dof(),
                      sol.method, scalarName<S>(), escalated ? "   escalated to " + sol.solved_in : "");
-  out << fmt::format("postures: {} found, {} expected in general   time: {:.3g} s{}\n", sol.count(),
-                     sol.expected_count, sol.seconds, sol.continuum ? "   (a continuum: representatives)" : "");
+  if (sol.self_motion_dimension > 0)
+    out << fmt::format("postures: a {}-dimensional self-motion (generic rank {} of 6), {} representative(s)   time: {:.3g} s\n",
+                       sol.self_motion_dimension, sol.generic_rank, sol.count(), sol.seconds);
+  else
+    out << fmt::format("postures: {} found, {} expected in general{}   time: {:.3g} s{}\n", sol.count(),
+                       sol.expected_count, sol.certified ? " (certified complete)" : "", sol.seconds,
+                       sol.continuum ? "   (a continuum: representatives)" : "");
+  if (!sol.reason.empty()) out << "no posture: " << sol.reason << "\n";
   for (std::size_t k = 0; k < sol.count(); ++k) {
     std::string line = fmt::format("  {:>2}:", k + 1);
     for (int i = 0; i < sol.postures[k].size(); ++i) line += " " + io::numberText(jointValue(sol.postures[k], i));  // S's digits
@@ -76,7 +89,7 @@ int ikImpl(const std::filesystem::path& file, const std::string& tip, const std:
   }
   if (rf.degrees) out << "  (joint angles in degrees)\n";
   for (const auto& n : sol.notes) out << "note: " << n << "\n";
-  return ok ? 0 : 1;
+  return exitCode;
 }
 
 int ikCommand(const std::filesystem::path& robot, const std::filesystem::path& pose,

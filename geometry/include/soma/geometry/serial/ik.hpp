@@ -10,6 +10,7 @@
 // for the general-6R methods (standard_dh.hpp). The robot's joint limits apply to every method.
 #include "soma/geometry/serial/closed_form_ik.hpp"
 #include "soma/geometry/serial/ik_solution.hpp"
+#include "soma/geometry/serial/self_motion.hpp"
 #include "soma/geometry/serial/serial_robot.hpp"
 
 #include <string>
@@ -36,9 +37,23 @@ template <class S> struct IkSolution : Solution<S> {
   int complex_count = -1;
   /// general6r: the scalar the eigenproblem was finally solved in (empty for the other methods).
   std::string solved_in;
+  /// general6r: the elimination used ("theta3 last", or another joint on a relabelled or
+  /// reversed loop; General6RSolution::elimination), empty for the other methods.
+  std::string elimination;
+  /// Why there is no posture (empty when there is one): "out of reach: …" or "joint limits: …".
+  std::string reason;
+  /// A robot whose joint screws span fewer than 6 dimensions at every configuration (every axis
+  /// through one point, every axis parallel, two axes on one line): the dimension of the
+  /// self-motion over every pose it reaches (0 for a robot with finitely many postures); its
+  /// postures are then representatives, one per component told apart (self_motion.hpp), and
+  /// `continuum` is true, `expected_count` 0 (there is no finite count).
+  int self_motion_dimension = 0;
+  /// The robot's generic Jacobian rank (genericJacobianRank; 6 for a 6R robot that is not degenerate).
+  int generic_rank = -1;
 };
 
-/// Every real posture of `robot` reaching `pose` (the tool pose in the base frame), each with its
+/// Every real posture of `robot` reaching `pose`. A 6R robot of generic Jacobian rank below 6 is
+/// answered by its self-motion whatever the method (self_motion.hpp). (the tool pose in the base frame), each with its
 /// residual (Solution<S>), postures outside the robot's joint limits dropped (a note says how
 /// many for the general-6R methods; the closed forms drop them as they solve). Throws InvalidInput
 /// when the method does not apply to the robot (e.g. general6r for a robot that is not 6R).
