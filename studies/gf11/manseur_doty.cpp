@@ -40,6 +40,10 @@ template <class T> Robot6R<T> manseurDoty() {
 // them), projected onto SO(3) by the polar iteration R ← (R + R⁻ᵀ)/2 (defect of the printed
 // matrix 2.4e-4): the same numbers as studies/robots/manseur_doty_pose.json.
 template <class T> SE3<T> manseurDotyPose() {
+  // Wider than double: the double pose converted exactly (the 17-digit matrix is orthogonal to
+  // double's precision only, and SO3::fromMatrix in long double/float128/mpfr rightly refuses it).
+  if constexpr (!std::is_same_v<T, float> && !std::is_same_v<T, double>)
+    return manseurDotyPose<double>().template cast<T>();
   Mat3<T> R;
   R << scalarCast<T>(-0.7601416939437986), scalarCast<T>(-0.6416653151941663), scalarCast<T>(0.10222635866068862),
       scalarCast<T>(0.13328325043221534), scalarCast<T>(2.149749638863032e-07), scalarCast<T>(0.991077986413873),
