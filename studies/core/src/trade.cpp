@@ -65,7 +65,7 @@ int tradeFigure(const TradeTable& t, const std::filesystem::path& png) {
       pts.push_back({&r, std::log10(r.medianSeconds), std::log10(std::max(r.p95Seconds, r.medianSeconds)),
                      std::log10(r.worstError)});
   if (pts.empty()) return 0;
-  // The decades the data reach, no more: [10^floor(min), 10^ceil(max)]; one decade at least.
+  // The range the data reach (log10), ticks at the decades inside it.
   double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
   for (const P& p : pts) {
     x0 = std::min(x0, p.lx0);
@@ -73,16 +73,22 @@ int tradeFigure(const TradeTable& t, const std::filesystem::path& png) {
     y0 = std::min(y0, p.ly);
     y1 = std::max(y1, p.ly);
   }
-  x0 = std::floor(x0);
-  x1 = std::max(std::ceil(x1), x0 + 1);
-  y0 = std::floor(y0);
-  y1 = std::max(std::ceil(y1), y0 + 1);
+  // A margin of 4 % of the span (at least a tenth of a decade) so that no marker is cut by the
+  // frame; never a whole empty decade.
+  auto widen = [](double& lo, double& hi) {
+    const double m = std::max(0.1, 0.04 * (hi - lo));
+    lo -= m;
+    hi += m;
+  };
+  widen(x0, x1);
+  widen(y0, y1);
   auto decadeTicks = [](double lo, double hi) {
-    const int span = int(hi - lo);
+    const int first = int(std::ceil(lo)), last = int(std::floor(hi));
+    const int span = last - first;
     const int step = span <= 10 ? 1 : span <= 20 ? 2 : span <= 50 ? 5 : span <= 100 ? 10 : 20;
     std::vector<double> ticks;
-    for (int e = int(lo); e <= int(hi); ++e)
-      if ((e - int(lo)) % step == 0) ticks.push_back(std::pow(10.0, e));
+    for (int e = first; e <= last; ++e)
+      if ((e - first) % step == 0) ticks.push_back(std::pow(10.0, e));
     return ticks;
   };
   rd::Plot plot;

@@ -39,8 +39,9 @@ void timeQuantiles(std::vector<double> seconds, double& median, double& p95);
 std::string tradeText(const TradeTable& t);
 
 /// Time per sample (median) against the worst error, log–log, one labelled point per rung, a
-/// horizontal bar from median to p95. The axes span exactly the decades the data reach (no empty
-/// decade); the legend goes into the corner the points leave free, else below the plot area.
+/// horizontal bar from median to p95. The axes span the data with a small margin (no empty
+/// decade), ticks at decades; the legend goes into a corner the points leave free, else each point
+/// is labelled.
 /// Rungs with a zero or non-finite error are left out of the figure (said in the caption).
 /// Writes the PNG; returns the number of rungs drawn.
 int tradeFigure(const TradeTable& t, const std::filesystem::path& png);
