@@ -1,5 +1,5 @@
-// GF-4.4-log-accuracy: how many ulps does soma's SE(3) log lose over θ ∈ (0, π], in float,
-// double, long double and float128, against an mpfr reference (GF §4.4.2, where the book's
+// GF-4.4-log-accuracy: how many ulps does soma's SE(3) log lose over θ ∈ (0, π], in the scalar
+// asked for (--scalar, --bits), against an mpfr reference (GF §4.4.2, where the book's
 // polynomial log loses up to eps/θ² — see GF-4.4.2-se3-log-4x4)? Plus the figure: error (ulps)
 // vs θ on a log axis, drawn with soma::render as a 2-D plot.
 #include "gf04/common.hpp"
@@ -89,44 +89,54 @@ void addSeries(rd::Plot& plot, const std::vector<Sample>& s, bool byDelta, const
   sr.width = 2;
 }
 
-void logAccuracy(Context& c) {
+// Runs in the asked scalar S (--scalar; mpfr at --bits, the reference at ≥ 2·bits + 64); double,
+// the default, also draws the float128 sweep for comparison. SOMA-log-speed-accuracy measures
+// every rung in one run.
+template <class S> void logAccuracy(Context& c) {
   std::vector<double> thetas, deltas;
   for (int k = 0; k <= 32; ++k) thetas.push_back(std::pow(10.0, -8.0 + 8.0 * k / 32));  // 1e-8 … 1
   for (int k = 0; k < 24; ++k) thetas.push_back(1.0 + 2.0 * (k + 0.5) / 24);            // 1 … 3
   for (int k = 0; k <= 32; ++k) deltas.push_back(std::pow(10.0, -15.0 + 15.0 * k / 32) * 0.9);  // π − δ
-  const auto dbl = sweep<double>(deltas, thetas);
-  const auto f128 = sweep<__float128>(deltas, thetas);
-  const auto flt = sweep<float>(deltas, thetas);
-  const auto ld = sweep<long double>(deltas, thetas);
+  const auto own = sweep<S>(deltas, thetas);
   auto worst = [](const std::vector<Sample>& s) {
     Sample w{0, 0, -1, false};
     for (const Sample& x : s)
       if (x.ulps > w.ulps) w = x;
     return w;
   };
-  const char* names[4] = {"float", "double", "long double", "float128"};
-  const std::vector<Sample>* all[4] = {&flt, &dbl, &ld, &f128};
-  for (int k = 0; k < 4; ++k) {
-    const Sample w = worst(*all[k]);
-    c.record(std::string("worst SE(3) log error in ") + names[k] + " over θ ∈ (0, π] (" + std::to_string(all[k]->size()) +
+  std::string name(scalarName<S>());
+  if constexpr (std::is_same_v<S, mpreal>) name += " (" + std::to_string(mpfrBits()) + " bits)";
+  {
+    const Sample w = worst(own);
+    c.record("worst SE(3) log error in " + name + " over θ ∈ (0, π] (" + std::to_string(own.size()) +
                  " angles, ulps of the normwise error; goal: a few ulps, ≤ 4)",
              "≤ 4 ulps", toString(w.ulps, 3) + " ulps at θ = " + (w.theta > 1.5 ? "π − " + toString(w.delta, 2) : toString(w.theta, 3)),
              w.ulps, 4.0, w.ulps <= 4.0);
   }
   // Cross-check with the library's own sweep (algebra/log_accuracy.hpp, another sampling and
   // another seed): the two independent measurements must agree that the error is a few ulps.
-  const LogAccuracy libD = worstLogError<double>(300), libQ = worstLogError<__float128>(300);
-  c.record("soma::worstLogError<double>(300) (independent sweep in algebra/)", "≤ 4 ulps",
-           toString(libD.worstUlps, 3) + " ulps at θ = " + toString(libD.worstTheta, 3), libD.worstUlps, 4.0,
-           libD.worstUlps <= 4.0);
-  c.record("soma::worstLogError<float128>(300)", "≤ 4 ulps",
-           toString(libQ.worstUlps, 3) + " ulps at θ = " + toString(libQ.worstTheta, 3), libQ.worstUlps, 4.0,
-           libQ.worstUlps <= 4.0);
+  const LogAccuracy lib = worstLogError<S>(std::is_same_v<S, mpreal> ? 100 : 300);
+  c.record("soma::worstLogError<" + name + ">(" + std::to_string(lib.samples) + ") (independent sweep in algebra/)",
+           "≤ 4 ulps", toString(lib.worstUlps, 3) + " ulps at θ = " + toString(lib.worstTheta, 3), lib.worstUlps, 4.0,
+           lib.worstUlps <= 4.0);
+  std::vector<Sample> f128;
+  if constexpr (std::is_same_v<S, double>) f128 = sweep<__float128>(deltas, thetas);
+  const auto& dbl = own;
   c.note("Method: X = (exp(θâ), t) built in the scalar type, SE3::log in that type, reference in mpfr (≥ 320 bits) "
          "from the same quaternion and translation: ω = 2 atan2(|q_v|, q_w) q_v/|q_v|, v = Jl(ω)⁻¹t with Jl by its "
          "power series. Error = max(‖Δω‖∞/‖ω‖∞, ‖Δv‖∞/‖v‖∞)/ε.");
   if (!c.makeFigures()) return;
-  // Two plots, every scalar the checks name: against θ ∈ [1e-8, 3] and against π − θ near π.
+  // Two plots against θ ∈ [1e-8, 3] and against π − θ near π: the asked scalar, and in double (the
+  // default run) also float, long double and float128 beside it (the figure's four scalars).
+  std::vector<std::pair<std::string, std::vector<Sample>>> drawn;
+  drawn.emplace_back(name, own);
+  if constexpr (std::is_same_v<S, double>) {
+    drawn.emplace_back("float", sweep<float>(deltas, thetas));
+    drawn.emplace_back("long double", sweep<long double>(deltas, thetas));
+    drawn.emplace_back("float128", f128);
+  }
+  std::string names;
+  for (std::size_t k = 0; k < drawn.size(); ++k) names += (k ? ", " : "") + drawn[k].first;
   for (const bool byDelta : {false, true}) {
     rd::Plot plot;
     plot.title = byDelta ? "SE(3) log near π: error in ulps vs π − θ" : "SE(3) log: error in ulps vs θ";
@@ -134,11 +144,11 @@ void logAccuracy(Context& c) {
     plot.x.scale = rd::AxisScale::Log10;
     plot.y.label = "normwise error (ulps of the scalar)";
     plot.y.min = 0;
-    for (int k = 0; k < 4; ++k) addSeries(plot, *all[k], byDelta, names[k], rd::palette::cycle(std::size_t(k)));
+    for (std::size_t k = 0; k < drawn.size(); ++k) addSeries(plot, drawn[k].second, byDelta, drawn[k].first, rd::palette::cycle(k));
     const std::string file = byDelta ? "GF-4.4-log-accuracy-near-pi.png" : "GF-4.4-log-accuracy.png";
     rd::renderPlotPngAndSvg(plot, c.figurePath(file), 1200, 760);
-    c.figure(file, std::string("Normwise error of soma's SE3::log in ulps of each scalar type (float, double, long double, "
-                               "float128) against an mpfr reference, for random axes and translations, ") +
+    c.figure(file, "Normwise error of soma's SE3::log in ulps of each scalar type (" + names +
+                       ") against an mpfr reference, for random axes and translations, " +
                        (byDelta ? "against π − θ for θ near π." : "against θ ∈ [1e-8, 3]."));
   }
 }
@@ -146,10 +156,10 @@ void logAccuracy(Context& c) {
 }  // namespace
 
 SOMA_STUDY({.id = "GF-4.4-log-accuracy",
-            .title = "Worst SE(3) log error over θ ∈ (0, π] in float, double, long double, float128 (vs mpfr)",
+            .title = "Worst SE(3) log error over θ ∈ (0, π] in the asked scalar (vs mpfr at ≥ 2p + 64 bits)",
             .source = "GF §4.4.2",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { logAccuracy(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { logAccuracy<S>(c); }); }});
 
 }  // namespace soma::studies::gf04::SOMA_UNITY_ID

@@ -500,16 +500,19 @@ void decomposition6RStudy(Context& c) {
 
 SOMA_STUDY({.id = "GF-5.2.3-cuspidal-posture-change",
             .title = "Cuspidal 3R arm: cusp points (two methods), circling a cusp (Fig. 5.2), an OMPL witness",
-            .source = "GF §5.2.3", .chapter = kChapter, .run = cuspidalPostureChange});
+            .source = "GF §5.2.3", .chapter = kChapter, .run = cuspidalPostureChange,
+            .whyDouble = "its witness path is planned with OMPL, which works in double"});
 SOMA_STUDY({.id = "GF-5.2.3-bifurcation-factorisation",
             .title = "At det J = 0 two roots of the 3R IK equation coalesce",
             .source = "GF §5.2.3", .chapter = kChapter, .run = bifurcation});
 SOMA_STUDY({.id = "SOMA-5.2.3-cusp-map",
             .title = "Parameter-space map of orthogonal 3R arms by number of cusps (TBB), traced cross-check",
-            .source = "GF §5.2.3; Baili, Wenger, Chablat 2004", .chapter = kChapter, .run = cuspMapStudy});
+            .source = "GF §5.2.3; Baili, Wenger, Chablat 2004", .chapter = kChapter, .run = cuspMapStudy,
+            .whyDouble = "a parameter map: findCusps escalates per cell itself (float128, mpfr), the map is drawn in double"});
 SOMA_STUDY({.id = "SOMA-5.2.3-workspace-ompl",
             .title = "Workspace probing with OMPL: reachability, dexterity, singular boundary, a plan away from det J = 0",
-            .source = "GF §5.2.3", .chapter = kChapter, .run = workspaceStudy});
+            .source = "GF §5.2.3", .chapter = kChapter, .run = workspaceStudy,
+            .whyDouble = "OMPL plans in double"});
 SOMA_STUDY({.id = "SOMA-5.2.3-witness-6r",
             .title = "6R witness search: PUMA 560 none found (not a proof), a cuspidal 6R found",
             .source = "GF §5.2.3; Wenger", .chapter = kChapter, .run = witness6RStudy});

@@ -367,11 +367,14 @@ void complexFigure(Context& c) {
 
 namespace {
 
+namespace figures_only {  // the reason below is these studies' only
+constexpr const char* kWhyDouble = "a figure: soma::render draws double geometry";
 SOMA_STUDY_DOUBLE("GF-6.1-fig6.1-line", "Fig. 6.1: a line through two points with its Plücker vectors", "GF §6.1", fig61);
 SOMA_STUDY_DOUBLE("GF-6.5.1-fig6.2-regulus", "Fig. 6.2: the two reguli of a hyperboloid", "GF §6.5.1", fig62);
 SOMA_STUDY_DOUBLE("GF-6.5.2-fig6.3-cylindroid", "Fig. 6.3: the cylindroid", "GF §6.5.2", fig63);
 SOMA_STUDY_DOUBLE("GF-6.5.3-fig6.4-curvature-axes", "Fig. 6.4: curvature axes at an elliptic and a hyperbolic point", "GF §6.5.3", fig64);
 SOMA_STUDY_DOUBLE("GF-6.7-fig6.5-6R-joints", "Fig. 6.5: joint axes of the PUMA-like 6R arm", "GF §6.7", fig65);
+}  // namespace figures_only
 
 }  // namespace
 }  // namespace soma::studies::gf06

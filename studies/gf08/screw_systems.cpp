@@ -1,4 +1,5 @@
-// Studies of GF chapter 8 (screw systems), in double: Grassmannian coordinates, reciprocity,
+// Studies of GF chapter 8 (screw systems), in double (the identification of the normal forms,
+// Tables 8.1 and 8.2, in the asked scalar): Grassmannian coordinates, reciprocity,
 // completion and isotropy algebras, the Gibson–Hunt normal forms (Tables 8.1, 8.2) and their
 // identification, the invariants of §8.4 with errata E8.2–E8.11, union and intersection (§8.5),
 // and the regulus figure of an IA₁ 3-system.
@@ -244,32 +245,45 @@ void isotropyStudy(Context& c) {
 }
 
 /// Identify posed normal forms of every row of a table.
-void tableIdentification(Context& c, const std::vector<Row>& rows, std::uint64_t seed, int trials) {
+/// The normal form of a table row in W (its parameters converted exactly from double).
+template <class W> ScrewMatX<W> normalFormIn(const Row& r) {
+  std::array<W, 3> p;
+  for (int i = 0; i < 3; ++i) p[i] = scalarCast<W>(r.p[i]);
+  return ScrewMatX<W>(screwSystemNormalForm<W>(r.t, p));
+}
+
+/// Every row's normal form posed by a random motion and a random basis change, built in W and
+/// identified in W: the type, the parameters and the frame recovered to W's precision.
+template <class W> void tableIdentification(Context& c, const std::vector<Row>& rows, std::uint64_t seed, int trials) {
   auto g = rng(seed);
   for (const auto& row : rows) {
     int ok = 0;
-    double worstP = 0, worstFrame = 0;
+    W worstP = 0, worstFrame = 0;
     for (int k = 0; k < trials; ++k) {
-      const SE3d x = SE3d::Random(g);
-      const MX nf = normalForm(row);
-      const auto id = identifyScrewSystem<double>(MX(x.adjoint() * nf * randomGL(int(nf.cols()), g)));
+      const SE3<W> x = SE3<W>::Random(g);
+      const ScrewMatX<W> nf = normalFormIn<W>(row);
+      const ScrewMatX<W> gl = randomGL(int(nf.cols()), g).unaryExpr([](double v) { return scalarCast<W>(v); });
+      const auto id = identifyScrewSystem<W>(ScrewMatX<W>(x.adjoint() * nf * gl));
       if (id.type != row.t) continue;
       ++ok;
-      for (int i = 0; i < id.parameterCount; ++i) worstP = std::max(worstP, abs(id.parameters[i] - row.p[i]));
-      worstFrame = std::max(worstFrame, id.frameResidual);
+      for (int i = 0; i < id.parameterCount; ++i) {
+        const W d = abs(id.parameters[i] - scalarCast<W>(row.p[i]));
+        if (d > worstP) worstP = d;
+      }
+      if (id.frameResidual > worstFrame) worstFrame = id.frameResidual;
     }
     c.checkEqual(screwSystemTypeName(row.t) + ": posed normal forms identified (of " + std::to_string(trials) + ")",
                  trials, ok);
-    c.checkResidual("… parameters recovered and frame maps the normal form onto the input",
-                    std::max(worstP, worstFrame), Tolerance<double>::identity(4096));
+    c.checkResidual<W>("… parameters recovered and frame maps the normal form onto the input",
+                       worstP > worstFrame ? worstP : worstFrame, Tolerance<W>::identity(4096));
   }
 }
 
-void normalForms2(Context& c) {
-  tableIdentification(c, twoRows(), 86, 25);
-  const auto id = identifyScrewSystem<double>(normalForm({T::IBp_2, {-0.7}}));
-  c.checkNear("IB: the sign of p is removable (normal form with p = −0.7 identified as p = 0.7)", 0.7,
-              id.parameters[0], kTol);
+template <class W> void normalForms2(Context& c) {
+  tableIdentification<W>(c, twoRows(), 86, 25);
+  const auto id = identifyScrewSystem<W>(normalFormIn<W>({T::IBp_2, {-0.7}}));
+  c.checkNear<W>("IB: the sign of p is removable (normal form with p = −0.7 identified as p = 0.7)", scalarCast<W>(0.7),
+                 id.parameters[0], Tolerance<W>::identity(64));
 }
 
 // GF §8.2.7 reduction and erratum E8.2.
@@ -345,10 +359,10 @@ void generalities3(Context& c) {
   c.checkResidual("IIA(p = 0.7) lies in the pitch quadric Q_{0.7}: Sᵀ(Q₀ + 0.7 Q∞)S = 0", maxAbs(gram(iia, qp)), kTol);
 }
 
-void normalForms3(Context& c) {
-  tableIdentification(c, threeRows(), 90, 25);
+template <class W> void normalForms3(Context& c) {
+  tableIdentification<W>(c, threeRows(), 90, 25);
   // GF §8.3.6 block reduction: the infinite-pitch extra screw gives IB₃/IIB when q'13 = q'23 = 0.
-  const auto id = identifyScrewSystem<double>(normalForm({T::IB0_3, {0.7, 0.0}}));
+  const auto id = identifyScrewSystem<W>(normalFormIn<W>({T::IB0_3, {0.7, 0.0}}));
   c.checkEqual("IB₀ with p_b = 0 (t in the ω-plane) stays IB₀", "IB₀", screwSystemTypeName(id.type));
 }
 
@@ -792,11 +806,11 @@ SOMA_STUDY_DOUBLE("GF-8.1-1-systems-moduli", "1-systems: pitch quadrics Q_p, pit
 SOMA_STUDY_DOUBLE("GF-8.1-reciprocal-system", "Reciprocal system: dimension 6 − n, involution, Ad-equivariance (E8.1)", "GF §8.1", reciprocal);
 SOMA_STUDY_DOUBLE("GF-8.1-derived-systems-completion", "Derived systems and the completion group of every normal form", "GF §8.1", completionStudy);
 SOMA_STUDY_DOUBLE("GF-8.2-isotropy-algebra", "Isotropy algebras of the normal forms; discrete symmetries", "GF §8.2", isotropyStudy);
-SOMA_STUDY_DOUBLE("GF-8.2-normal-forms-2-systems", "Table 8.1: posed 2-system normal forms identified", "GF §8.2", normalForms2);
+SOMA_STUDY_SCALAR("GF-8.2-normal-forms-2-systems", "Table 8.1: posed 2-system normal forms identified", "GF §8.2", normalForms2);
 SOMA_STUDY_DOUBLE("GF-8.2.7-SE3-2-system-reduction", "Reduction of SE(3) 2-systems to (i, p_a i), (j, p_b j) (E8.2)", "GF §8.2.7", reduction2);
 SOMA_STUDY_DOUBLE("GF-8.2-IA-cylindroid", "IA 2-systems: the two real lines and the cylindroid", "GF §8.2", cylindroid);
 SOMA_STUDY_DOUBLE("GF-8.3-3-system-generalities", "3-systems: moduli count, type I / II", "GF §8.3", generalities3);
-SOMA_STUDY_DOUBLE("GF-8.3-normal-forms-3-systems", "Table 8.2: posed 3-system normal forms identified", "GF §8.3", normalForms3);
+SOMA_STUDY_SCALAR("GF-8.3-normal-forms-3-systems", "Table 8.2: posed 3-system normal forms identified", "GF §8.3", normalForms3);
 SOMA_STUDY_DOUBLE("GF-8.3-regulus-quadrics", "Lines of type-I 3-systems: hyperboloid, paraboloid (E8.7), plane pair (E8.8)", "GF §8.3", reguli);
 SOMA_STUDY_DOUBLE("GF-8.3-alpha-beta-planes", "α- and β-planes as IIA(0), IIC(0), IIB(0), IID", "GF §8.3", alphaBeta);
 SOMA_STUDY_DOUBLE("GF-8.3-reciprocal-3-systems", "Reciprocal 3-systems keep their type; IA₁ moduli negate", "GF §8.3", reciprocal3);

@@ -107,7 +107,8 @@ SOMA_STUDY({.id = "GF-10.1.1-fig10.1-plane",
             .source = "GF §10.1.1",
             .chapter = kChapter,
             .scalarGeneric = false,
-            .run = planeFigure});
+            .run = planeFigure,
+            .whyDouble = "a figure: soma::render draws double geometry"});
 
 // pga::Line (the Clifford-algebra form) against the Plücker 6-vector (v; u) = (x2 − x1; x1 × x2)
 // of two points computed directly, including far points and nearly coincident ones.

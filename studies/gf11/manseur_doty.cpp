@@ -4,7 +4,8 @@
 // of Wampler & Morgan 1991, "a slight variation" of the Manseur–Doty arm, twists 90°, 1°, 90°,
 // 1°, 90°, 1°), with their hand pose A_hand and their 16 postures (Table III, degrees, 2 decimals)
 // as the reference. The same robot and pose are studies/robots/manseur_doty{,_pose}.json.
-// Runs in double (the solver's long double rung is used for one cross-check).
+// Runs in the asked scalar (--scalar; the solver escalates a short float answer itself); the
+// cross-check against another rung, the Ceres alternative and the figure run in double.
 #include "soma/geometry/serial/general_6r.hpp"
 #include "soma/geometry/serial/serial_robot.hpp"
 #include "soma/geometry/study/intersection_ring.hpp"
@@ -40,6 +41,10 @@ template <class T> Robot6R<T> manseurDoty() {
 // them), projected onto SO(3) by the polar iteration R ← (R + R⁻ᵀ)/2 (defect of the printed
 // matrix 2.4e-4): the same numbers as studies/robots/manseur_doty_pose.json.
 template <class T> SE3<T> manseurDotyPose() {
+  // Wider than double: the double pose converted exactly (the 17-digit matrix is orthogonal to
+  // double's precision only, and SO3::fromMatrix in long double/float128/mpfr rightly refuses it).
+  if constexpr (!std::is_same_v<T, float> && !std::is_same_v<T, double>)
+    return manseurDotyPose<double>().template cast<T>();
   Mat3<T> R;
   R << scalarCast<T>(-0.7601416939437986), scalarCast<T>(-0.6416653151941663), scalarCast<T>(0.10222635866068862),
       scalarCast<T>(0.13328325043221534), scalarCast<T>(2.149749638863032e-07), scalarCast<T>(0.991077986413873),
@@ -59,10 +64,10 @@ constexpr double kTable3[16][6] = {
     {-120.78, 172.33, 0.92, 148.66, -33.28, -37.17},    {113.84, 5.30, 2.25, -124.07, -117.01, 136.62}};
 
 // Largest joint difference in degrees, angles compared on the circle.
-double angleGap(const std::array<double, 6>& degrees, const JointVector<S>& q) {
+template <class T> double angleGap(const std::array<double, 6>& degrees, const JointVector<T>& q) {
   double g = 0;
   for (int i = 0; i < 6; ++i) {
-    const double d = std::remainder(degrees[i] - q(i) / kDeg, 360.0);
+    const double d = std::remainder(degrees[i] - toDouble(q(i)) / kDeg, 360.0);
     g = std::max(g, std::abs(d));
   }
   return g;
@@ -174,20 +179,37 @@ void drawPostures(Context& c, const Robot6R<S>& rows, const SE3<S>& T, const Gen
                  "of (θ1, θ2, θ3); the two postures of a pair share θ1, θ2 and a colour.");
 }
 
-// GF §11.5.1, GF-11.5.1-6R-sixteen (16 = (2σ_A + 4σ_B)², reached by 16 real postures)
-void sixteen(Context& c) {
+/// Largest joint difference (rad, on the circle) from each posture of a to its nearest in b.
+template <class A, class B> double worstNearest(const General6RSolution<A>& a, const General6RSolution<B>& b) {
+  double agree = 0;
+  for (std::size_t m = 0; m < a.count(); ++m) {
+    double best = 1e300;
+    for (std::size_t n = 0; n < b.count(); ++n) {
+      double d = 0;
+      for (int i = 0; i < 6; ++i)
+        d = std::max(d, std::abs(std::remainder(toDouble(b.postures[n](i)) - toDouble(a.postures[m](i)), 2 * pi<double>())));
+      best = std::min(best, d);
+    }
+    agree = std::max(agree, best);
+  }
+  return agree;
+}
+
+// GF §11.5.1, GF-11.5.1-6R-sixteen (16 = (2σ_A + 4σ_B)², reached by 16 real postures), in the
+// scalar W asked for.
+template <class W> void sixteen(Context& c) {
   using C = StudyClass;
   c.checkEqual("the count: (2σ_A + 4σ_B)² on the Study quadric", 16, (2 * C::sigmaA() + 4 * C::sigmaB()).pow(2).degree());
-  const Robot6R<S> robot = manseurDoty<S>();
-  const SE3<S> T = manseurDotyPose<S>();
-  const General6RSolution<S> sol = solveGeneral6R<S>(robot, T);
+  const Robot6R<W> robot = manseurDoty<W>();
+  const SE3<W> T = manseurDotyPose<W>();
+  const General6RSolution<W> sol = solveGeneral6R<W>(robot, T);
   c.checkEqual("complex solutions of the eigenproblem", 16, sol.complex_count);
   c.checkEqual("real postures (Manseur–Doty arm, Wampler–Morgan variant, Manocha–Canny pose)", 16, int(sol.count()));
   // Residual max(‖R − R*‖_F, ‖t − t*‖/L) of each posture after the Newton polish: rounding of the
   // forward chain, a few ulps per link.
-  c.checkResidual("worst pose residual of the 16 postures", sol.worstResidual(), Tolerance<S>::identity(256));
-  c.note(fmt::format("eigenproblem solved in {}; leading-matrix rcond {:.3g}; smallest relative gap between "
-                     "real x3 = tan(θ3/2) values {:.3g}; {:.3g} ms",
+  c.checkResidual("worst pose residual of the 16 postures", sol.worstResidual(), Tolerance<W>::identity(256));
+  c.note(fmt::format("solved in {}: eigenproblem solved in {}; leading-matrix rcond {:.3g}; smallest relative gap "
+                     "between real x3 = tan(θ3/2) values {:.3g}; {:.3g} ms", scalarName<W>(),
                      sol.solved_in, sol.leading_rcond, sol.min_gap, 1e3 * sol.seconds));
   for (const auto& n : sol.notes) c.note("solver: " + n);
 
@@ -202,9 +224,9 @@ void sixteen(Context& c) {
   for (int k = 0; k < 16; ++k) {
     std::array<double, 6> ref;
     std::copy(std::begin(kTable3[k]), std::end(kTable3[k]), ref.begin());
-    std::array<S, 6> qr;
-    for (int i = 0; i < 6; ++i) qr[i] = ref[i] * kDeg;
-    tableDefect = std::max(tableDefect, toDouble(general6rResidual<S>(robot, T, qr)));
+    std::array<W, 6> qr;
+    for (int i = 0; i < 6; ++i) qr[i] = scalarCast<W>(ref[i] * kDeg);
+    tableDefect = std::max(tableDefect, toDouble(general6rResidual<W>(robot, T, qr)));
     int best = -1;
     double bestGap = 1e300;
     for (std::size_t m = 0; m < sol.count(); ++m) {
@@ -224,37 +246,36 @@ void sixteen(Context& c) {
   for (std::size_t a = 0; a < sol.count(); ++a)
     for (std::size_t b = a + 1; b < sol.count(); ++b) {
       double d = 0;
-      for (int i = 0; i < 6; ++i) d = std::max(d, std::abs(std::remainder(sol.postures[a](i) - sol.postures[b](i), 2 * pi<S>())));
+      for (int i = 0; i < 6; ++i)
+        d = std::max(d, std::abs(std::remainder(toDouble(sol.postures[a](i)) - toDouble(sol.postures[b](i)), 2 * pi<S>())));
       minDist = std::min(minDist, d);
     }
   c.note(fmt::format("smallest distance between two of the 16 postures: {:.4f} rad ({:.2f}°)", minDist, minDist / kDeg));
   c.record("the 16 postures are distinct: smallest joint distance between two", "> 0.01 rad",
            fmt::format("{:.4f} rad", minDist), 0, 0.01, minDist > 0.01);
 
-  // The same 16 in long double (the solver's next rung): the double postures are correct to
-  // the conditioning of the problem.
-  const auto sl = solveGeneral6R<long double>(manseurDoty<long double>(), manseurDotyPose<long double>());
-  c.checkEqual("real postures in long double", 16, int(sl.count()));
-  double agree = 0;
-  for (std::size_t m = 0; m < sol.count(); ++m) {
-    double best = 1e300;
-    for (std::size_t n = 0; n < sl.count(); ++n) {
-      double d = 0;
-      for (int i = 0; i < 6; ++i)
-        d = std::max(d, std::abs(std::remainder(double(sl.postures[n](i)) - sol.postures[m](i), 2 * pi<S>())));
-      best = std::min(best, d);
-    }
-    agree = std::max(agree, best);
-  }
-  c.checkResidual("double vs long double postures (largest joint difference, rad)", agree, Tolerance<S>::sqrtEpsilon());
+  // The same 16 in another rung: for float and double the next one (long double), for the wider
+  // rungs double; the postures agree to the conditioning of the problem in the narrower scalar.
+  using Other = std::conditional_t<(std::is_same_v<W, float> || std::is_same_v<W, double>), long double, double>;
+  using Narrow = std::conditional_t<std::is_same_v<W, float>, float, double>;
+  const auto sl = solveGeneral6R<Other>(manseurDoty<Other>(), manseurDotyPose<Other>());
+  c.checkEqual(std::string("real postures in ") + std::string(scalarName<Other>()), 16, int(sl.count()));
+  c.checkResidual(fmt::format("{} vs {} postures (largest joint difference, rad)", scalarName<W>(), scalarName<Other>()),
+                  worstNearest(sol, sl), toDouble(Tolerance<Narrow>::sqrtEpsilon()));
 
+  // Ceres and the figure work in double.
+  const Robot6R<S> robotD = manseurDoty<S>();
+  const SE3<S> TD = manseurDotyPose<S>();
+  General6RSolution<S> solD;
+  if constexpr (std::is_same_v<W, S>) solD = sol;
+  else solD = solveGeneral6R<S>(robotD, TD);
   // The numerical alternative (Ceres, 64 random starts) on the same problem: every posture it
   // returns is one of the 16, and how many of them it finds.
-  const auto ce = solveGeneral6RCeres(robot, T);
+  const auto ce = solveGeneral6RCeres(robotD, TD);
   int ceresKnown = 0;
   for (const auto& p : ce.postures) {
     bool known = false;
-    for (const auto& q : sol.postures) {
+    for (const auto& q : solD.postures) {
       double d = 0;
       for (int i = 0; i < 6; ++i) d = std::max(d, std::abs(std::remainder(p(i) - q(i), 2 * pi<S>())));
       known = known || d <= Tolerance<S>::sqrtEpsilon();
@@ -265,14 +286,15 @@ void sixteen(Context& c) {
   c.note(fmt::format("Ceres multi-start (64 starts, seed 1) finds {} of the 16 real postures", ce.count()));
 
   if (!c.makeFigures()) return;
-  drawPostures(c, robot, T, sol);
+  drawPostures(c, robotD, TD, solD);
 }
 
 const std::string kChapter = "GF 11 — The Study quadric";
 
 SOMA_STUDY({.id = "GF-11.5.1-6R-sixteen",
             .title = "16 real postures of a 6R: the Manseur–Doty arm (Wampler–Morgan variant) by the eigenproblem",
-            .source = "GF §11.5.1", .chapter = kChapter, .run = sixteen});
+            .source = "GF §11.5.1", .chapter = kChapter, .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class W>() { sixteen<W>(c); }); }});
 
 }  // namespace
 }  // namespace soma::studies::SOMA_UNITY_ID

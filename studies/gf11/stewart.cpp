@@ -232,8 +232,19 @@ void stewartForty(Context& c) {
   if (c.makeFigures() && s.count() > 0) postureGrid(c, P, s, "GF-11.5.4-stewart-postures.png");
 }
 
-// GF §11.5.2, GF-11.5.2-6-3-stewart-sixteen
-void sixThree(Context& c) {
+/// Distance (|ΔT|, 4×4) from g to the nearest real posture, in W.
+template <class W> W nearestIn(const StewartForwardSolution<W>& s, const SE3<W>& g) {
+  W best = W(1e300);
+  for (const auto& h : s.postures) {
+    const W d = (h.matrix() - g.matrix()).norm();
+    if (d < best) best = d;
+  }
+  return best;
+}
+
+// GF §11.5.2, GF-11.5.2-6-3-stewart-sixteen, in the asked scalar W: the platforms are drawn in
+// double, converted exactly, and their leg lengths recomputed in W from the defining posture.
+template <class W> void sixThree(Context& c) {
   std::mt19937_64 g(63);
   const int n = 5;
   int sixteen = 0, found = 0, failed = 0, singular = 0, expected = 0;
@@ -242,11 +253,13 @@ void sixThree(Context& c) {
     auto P = randomPlatform(g, &pose);
     const std::array<Vec3<S>, 3> t3{P.platform[0], P.platform[2], P.platform[4]};
     for (int i = 0; i < 6; ++i) P.platform[i] = t3[((i + 1) / 2) % 3];
-    P.legs = stewartLegLengths<S>(P, pose);
-    const auto s = solveStewartForward<S>(P);
+    StewartPlatform<W> Q = P.template cast<W>();
+    const SE3<W> poseW = pose.template cast<W>();
+    Q.legs = stewartLegLengths<W>(Q, poseW);
+    const auto s = solveStewartForward<W>(Q);
     sixteen += s.complexCount() == 16;
     expected += s.expected_count == 16;
-    found += nearest(s, pose) <= Tolerance<S>::sqrtEpsilon();
+    found += nearestIn(s, poseW) <= Tolerance<W>::sqrtEpsilon();
     failed += s.paths_failed;
     singular += 40 - s.complexCount() - s.paths_at_infinity;
   }
@@ -257,7 +270,6 @@ void sixThree(Context& c) {
   c.checkEqual("… paths that failed in tracking", 0, failed);
   c.checkEqual("… paths of the 40 that end at singular points of the degenerate system", 24 * n, singular);
 }
-
 
 // ---- SOMA-11.5.4-stewart-speed-accuracy ---------------------------------------------------------
 struct Case {
@@ -278,6 +290,7 @@ struct TradeRow {
   std::size_t platforms = 0;
   double median = 0, p95 = 0, worst = 0, completeness = 0;
   std::size_t retracked = 0;
+  std::string worstText;  ///< the worst residual in T's digits
 };
 
 double quantile(std::vector<double> v, double p) {
@@ -299,6 +312,8 @@ template <class T>
 TradeRow homotopyRow(const std::vector<Case>& cases, std::size_t n, std::size_t& short40,
                      std::vector<std::vector<SE3<S>>>* keep) {
   TradeRow row{"homotopy", std::string(scalarName<T>())};
+  if constexpr (std::is_same_v<T, mpfr::mpreal>) row.scalar += " (" + std::to_string(mpfrBits()) + " bits)";
+  T worst = 0;
   std::vector<double> times;
   std::size_t found = 0;
   const double match = std::max(toDouble(Tolerance<T>::precision(2)), toDouble(Tolerance<S>::precision(2)));
@@ -312,7 +327,7 @@ TradeRow homotopyRow(const std::vector<Case>& cases, std::size_t n, std::size_t&
     bool hit = false;
     for (std::size_t j = 0; j < sol.count(); ++j) {
       hit = hit || poseDistance(sol.postures[j], cases[k].pose, size) < match;
-      row.worst = std::max(row.worst, toDouble(sol.residuals[j]));
+      if (sol.residuals[j] > worst) worst = sol.residuals[j];
     }
     found += hit;
     if (keep) {
@@ -324,6 +339,8 @@ TradeRow homotopyRow(const std::vector<Case>& cases, std::size_t n, std::size_t&
   row.median = quantile(times, 0.5);
   row.p95 = quantile(times, 0.95);
   row.completeness = double(found) / double(n);
+  row.worst = toDouble(worst);
+  row.worstText = io::numberText(worst);
   return row;
 }
 
@@ -415,32 +432,31 @@ void speedAccuracy(Context& c) {
       "(papers/benchmarks/stewart.md has quiet runs).",
       nNum, nFloat, nLong, nQuad, nMpfr));
 
-  if (c.makeFigures()) {
-    render::Plot plot;
-    plot.title = "Stewart-Gough forward kinematics: time per platform vs worst residual";
-    plot.x.label = "time per platform (s): median to p95";
-    plot.x.scale = render::AxisScale::Log10;
-    plot.y.label = "worst leg residual / platform size";
-    plot.y.scale = render::AxisScale::Log10;
-    // The y axis fits the residuals: a decade below the smallest positive one (the legend places
-    // itself where it hides no segment).
-    double floorResidual = 1;
-    for (const auto& r : rows)
-      if (r.worst > 0) floorResidual = std::min(floorResidual, r.worst);
-    floorResidual = std::pow(10.0, std::floor(std::log10(floorResidual)) - 1);
-    plot.y.min = floorResidual;
-    std::size_t ci = 0;
-    for (const auto& r : rows) {
-      const double w = r.worst > 0 ? r.worst : floorResidual;  // an exact 0 sits on the axis floor
-      auto& sr = plot.add(r.method + " " + r.scalar, {r.median, r.p95}, {w, w}, render::palette::cycle(ci++));
-      sr.markers = true;
-      sr.line = true;
-    }
-    const std::string f = "SOMA-11.5.4-stewart-speed-accuracy.png";
-    render::renderPlotPngAndSvg(plot, c.figurePath(f));
-    c.figure(f, "Each method and scalar: a segment from the median to the p95 time per platform, at its worst "
-                "residual (log-log).");
+  // The trade table (the report's "speed vs accuracy"): the homotopy on every rung. Its
+  // escalation is the re-track of a path (finer step, another γ, or the path in a wider scalar);
+  // the start solutions are computed once per process in double and polished in each rung.
+  TradeTable t;
+  t.solver = "Stewart–Gough forward kinematics, homotopy (GF §11.5.4)";
+  t.sample = "platform";
+  t.errorLabel = "worst leg residual / size";
+  for (std::size_t i : {std::size_t(1), std::size_t(0), std::size_t(2), std::size_t(3), std::size_t(4)}) {
+    const auto& r = rows[i];
+    TradeRung g;
+    g.scalar = r.scalar;
+    g.samples = r.platforms;
+    g.medianSeconds = r.median;
+    g.p95Seconds = r.p95;
+    g.worstError = r.worst;
+    g.worstErrorText = r.worstText;
+    g.escalated = r.retracked;
+    if (r.retracked) g.escalatedTo = "a re-track: finer step, another γ or a wider scalar";
+    g.comment = fmt::format("defining posture found in {} of {}; {} short of 40", std::llround(r.completeness * double(r.platforms)),
+                            r.platforms, short40[i]);
+    t.rungs.push_back(std::move(g));
   }
+  c.trade(std::move(t), "SOMA-11.5.4-stewart-speed-accuracy.png",
+          "Stewart–Gough forward kinematics by the homotopy: median time per platform (point; bar to the p95) "
+          "against the worst leg residual over the platform size, one point per scalar (log–log).");
 }
 
 // GF §11.5.2, GF-11-fig-11.2: in a 6-3 platform two legs share a platform joint; with their base
@@ -548,7 +564,7 @@ void triangleFigure(Context& c) {
 SOMA_STUDY_DOUBLE("GF-11.5.4-stewart-forty",
             "General 6-6 Stewart platform: 40 complex forward-kinematics solutions (homotopy), real postures drawn",
             "GF §11.5.4", stewartForty);
-SOMA_STUDY_DOUBLE("GF-11.5.2-6-3-stewart-sixteen", "6-3 Stewart platform: 16 postures (the other 24 paths end singular)",
+SOMA_STUDY_SCALAR("GF-11.5.2-6-3-stewart-sixteen", "6-3 Stewart platform: 16 postures (the other 24 paths end singular)",
             "GF §11.5.2", sixThree);
 SOMA_STUDY_DOUBLE("GF-11-fig-11.2", "Fig. 11.2: two legs of a 6-3 platform sharing a joint form an R-S pair", "GF §11.5.2",
             triangleFigure);
@@ -557,7 +573,8 @@ SOMA_STUDY({.id = "SOMA-11.5.4-stewart-speed-accuracy",
             .source = "GF §11.5.4",
             .chapter = "soma — Stewart platforms",
             .scalarGeneric = false,
-            .run = speedAccuracy});
+            .run = speedAccuracy,
+            .ladder = true});
 
 }  // namespace
 }  // namespace soma::studies::gf11stewart::SOMA_UNITY_ID

@@ -15,6 +15,7 @@ namespace soma::studies::gf12::SOMA_UNITY_ID {  // this file's own names in a un
 namespace {
 
 constexpr const char* kChapter = "GF 12 — Statics";
+constexpr const char* kWhyDouble = "a figure: soma::render draws double geometry";
 namespace rd = soma::render;
 using V3 = Eigen::Vector3d;
 using V6 = Vec6<double>;

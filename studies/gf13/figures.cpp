@@ -103,6 +103,6 @@ void figures(Context& ctx) {
 }  // namespace
 
 SOMA_STUDY({.id = "GF-13-figures", .title = "Derived figure: the principal screws of inertia of a box (the chapter has none)",
-            .source = "GF §13.1", .chapter = kChapter, .scalarGeneric = false, .run = figures});
+            .source = "GF §13.1", .chapter = kChapter, .scalarGeneric = false, .run = figures, .whyDouble = "a figure: soma::render draws double geometry"});
 
 }  // namespace soma::studies::gf13::SOMA_UNITY_ID

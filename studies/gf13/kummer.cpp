@@ -126,6 +126,6 @@ void kummerFigure(Context& ctx) {
 }  // namespace
 
 SOMA_STUDY({.id = "GF-13-fig-kummer", .title = "Derived figure: the quadratic line complex and its Kummer surface (principal planes)",
-            .source = "GF §13.6.1", .chapter = kChapter, .scalarGeneric = false, .run = kummerFigure});
+            .source = "GF §13.6.1", .chapter = kChapter, .scalarGeneric = false, .run = kummerFigure, .whyDouble = "a figure: soma::render draws double geometry"});
 
 }  // namespace soma::studies::gf13::SOMA_UNITY_ID

@@ -6,9 +6,6 @@
 #include "soma/geometry/serial/general_6r.hpp"
 #include "soma/studies/study.hpp"
 
-#include "soma/render/plot.hpp"
-#include "soma/render/svg.hpp"
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -57,6 +54,8 @@ struct Row {
   double median = 0, p95 = 0, worst = 0;
   double completeness = 0;  ///< fraction found (see the note)
   std::size_t escalated = 0;
+  std::string escalatedTo;  ///< the rungs the escalated poses were solved in
+  std::string worstText;    ///< the worst residual in the rung's digits
 };
 
 double quantile(std::vector<double> v, double p) {
@@ -69,15 +68,20 @@ double quantile(std::vector<double> v, double p) {
 /// (evaluated against the pose cast to S).
 template <class S>
 Row algebraic(const std::vector<Case>& cases, std::size_t n,
-              std::vector<General6RSolution<double>>* keep) {
-  Row row{"algebraic", std::string(scalarName<S>())};
+              std::vector<General6RSolution<double>>* keep, const General6ROptions& options = {}) {
+  Row row;
+  row.method = "algebraic";
+  row.scalar = std::string(scalarName<S>());
+  if constexpr (std::is_same_v<S, mpfr::mpreal>) row.scalar += " (" + std::to_string(mpfrBits()) + " bits)";
+  if (!options.escalate) row.scalar += " (no escalation)";
+  S worst = 0;
   std::vector<double> times;
   std::size_t found = 0;
   for (std::size_t k = 0; k < n; ++k) {
     Robot6R<S> rb;
     for (int i = 0; i < 6; ++i) rb[i] = cases[k].robot[i].template cast<S>();
     const SE3<S> T = cases[k].pose.template cast<S>();
-    const auto sol = solveGeneral6R(rb, T);
+    const auto sol = solveGeneral6R(rb, T, options);
     times.push_back(sol.seconds);
     bool hit = false;
     for (std::size_t j = 0; j < sol.count(); ++j) {
@@ -85,10 +89,14 @@ Row algebraic(const std::vector<Case>& cases, std::size_t n,
       const double match = std::max(toDouble(Tolerance<S>::precision(2)),
                                     toDouble(Tolerance<double>::precision(2)));
       hit = hit || distance(sol.postures[j], cases[k].q) < match;
-      row.worst = std::max(row.worst, toDouble(sol.residuals[j]));
+      if (sol.residuals[j] > worst) worst = sol.residuals[j];
     }
     found += hit;
-    row.escalated += sol.solved_in != scalarName<S>();
+    if (sol.solved_in != scalarName<S>()) {
+      ++row.escalated;
+      if (row.escalatedTo.find(sol.solved_in) == std::string::npos)
+        row.escalatedTo += (row.escalatedTo.empty() ? "" : ", ") + sol.solved_in;
+    }
     if (keep) {
       General6RSolution<double> d;
       for (const auto& p : sol.postures) d.postures.push_back(p.unaryExpr([](const S& x) { return toDouble(x); }));
@@ -99,13 +107,17 @@ Row algebraic(const std::vector<Case>& cases, std::size_t n,
   row.median = quantile(times, 0.5);
   row.p95 = quantile(times, 0.95);
   row.completeness = double(found) / double(n);
+  row.worst = toDouble(worst);
+  row.worstText = io::numberText(worst);
   return row;
 }
 
 template <class F>
 Row numerical(const std::string& name, const std::vector<Case>& cases, std::size_t n,
               const std::vector<General6RSolution<double>>& ref, std::size_t& outside, F&& solve) {
-  Row row{name, "double"};
+  Row row;
+  row.method = name;
+  row.scalar = "double";
   std::vector<double> times;
   std::size_t refTotal = 0, refFound = 0;
   for (std::size_t k = 0; k < n; ++k) {
@@ -146,6 +158,10 @@ void tradeoff(Context& ctx) {
   rows.push_back(algebraic<long double>(cases, nLong, nullptr));
   rows.push_back(algebraic<__float128>(cases, nQuad, nullptr));
   rows.push_back(algebraic<mpfr::mpreal>(cases, nMpfr, nullptr));
+  // The real float computation: no re-solve in double when the float eigenproblem is short.
+  General6ROptions floatOnly;
+  floatOnly.escalate = false;
+  const Row floatOwn = algebraic<float>(cases, nFloat, nullptr, floatOnly);
 
   std::size_t total = 0;
   std::array<std::size_t, 17> hist{};
@@ -209,32 +225,47 @@ void tradeoff(Context& ctx) {
            ") to keep the study short. 'escalated' counts poses re-solved in a higher scalar. "
            "Times are wall seconds on a shared machine (see papers/benchmarks/ik.md for quiet runs).");
 
-  if (ctx.makeFigures()) {
-    render::Plot plot;
-    plot.title = "General 6R: time per pose vs worst residual";
-    plot.x.label = "time per pose (s): median to p95";
-    plot.x.scale = render::AxisScale::Log10;
-    plot.y.label = "worst residual";
-    plot.y.scale = render::AxisScale::Log10;
-    // The y axis fits the residuals: a decade below the smallest positive one (the legend places
-    // itself where it hides no segment).
-    double floorResidual = 1;
-    for (const auto& r : rows)
-      if (r.worst > 0) floorResidual = std::min(floorResidual, r.worst);
-    floorResidual = std::pow(10.0, std::floor(std::log10(floorResidual)) - 1);
-    plot.y.min = floorResidual;
-    std::size_t ci = 0;
-    for (const auto& r : rows) {
-      const double w = r.worst > 0 ? r.worst : floorResidual;  // an exact 0 sits on the axis floor
-      auto& s = plot.add(r.method + " " + r.scalar, {r.median, r.p95}, {w, w}, render::palette::cycle(ci++));
-      s.markers = true;
-      s.line = true;
-    }
-    const std::string f = "SOMA-6R-speed-accuracy.png";
-    render::renderPlotPngAndSvg(plot, ctx.figurePath(f));
-    ctx.figure(f, "Each method and scalar: a segment from the median to the p95 time per pose, "
-                  "at its worst residual (log-log).");
-  }
+  // The trade table (report section "speed vs accuracy"): the algebraic method on every rung,
+  // float twice — as the solver runs it (escalating to double when the float eigenproblem is
+  // short) and on its own (no escalation: a real float computation, completeness said).
+  TradeTable t;
+  t.solver = "General 6R, algebraic (GF §11.5)";
+  t.sample = "pose";
+  t.errorLabel = "worst residual";
+  auto rung = [](const Row& r, std::string comment) {
+    TradeRung g;
+    g.scalar = r.scalar;
+    g.samples = r.poses;
+    g.medianSeconds = r.median;
+    g.p95Seconds = r.p95;
+    g.worstError = r.worst;
+    g.worstErrorText = r.worstText;
+    g.escalated = r.escalated;
+    g.escalatedTo = r.escalatedTo;
+    g.comment = std::move(comment);
+    return g;
+  };
+  auto found = [](const Row& r) {
+    return "generating posture found in " + std::to_string(std::llround(r.completeness * double(r.poses))) + " of " +
+           std::to_string(r.poses);
+  };
+  t.rungs.push_back(rung(floatOwn, found(floatOwn) + " (float alone)"));
+  t.rungs.push_back(rung(rows[1], found(rows[1]) + "; escalated poses solved again in double"));
+  t.rungs.push_back(rung(rows[0], found(rows[0])));
+  t.rungs.push_back(rung(rows[2], found(rows[2])));
+  t.rungs.push_back(rung(rows[3], found(rows[3])));
+  t.rungs.push_back(rung(rows[4], found(rows[4])));
+  ctx.note("float on its own (no escalation): " + found(floatOwn) + " poses, worst residual " + floatOwn.worstText +
+           "; as the solver runs it, float re-solves " + std::to_string(rows[1].escalated) + " of " +
+           std::to_string(rows[1].poses) + " poses in " + (rows[1].escalatedTo.empty() ? "a higher rung" : rows[1].escalatedTo) +
+           " (its time includes those re-solves).");
+  // The float computation on its own finds fewer generating postures than the escalating one,
+  // never more: an escalation only adds postures (a check that the two rows are what they say).
+  ctx.checkEqual("float alone finds no posture the escalating float misses (count of poses)", 1,
+                 floatOwn.completeness <= rows[1].completeness ? 1 : 0);
+  ctx.trade(std::move(t), "SOMA-6R-speed-accuracy.png",
+            "General 6R, algebraic method: median time per pose (point; bar to the p95) against the worst "
+            "residual, one point per scalar (float alone and float escalating to double), log–log.");
 }
 
 }  // namespace
@@ -244,6 +275,7 @@ SOMA_STUDY({.id = "SOMA-6R-speed-accuracy",
             .source = "GF §11.5",
             .chapter = "soma — inverse kinematics",
             .scalarGeneric = false,
-            .run = [](Context& c) { tradeoff(c); }});
+            .run = [](Context& c) { tradeoff(c); },
+            .ladder = true});
 
 }  // namespace soma::studies::SOMA_UNITY_ID

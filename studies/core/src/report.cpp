@@ -271,6 +271,18 @@ ReportInfo collectReportInfo(ScalarKind scalar, std::string command, double seco
   return info;
 }
 
+// ---- what a study ran in ----------------------------------------------------------------------
+std::string ranInText(const StudyResult& r) {
+  const int bits = r.mpfrBits > 0 ? r.mpfrBits : mpfrBits();
+  if (r.study && r.study->runsIn() == RunsIn::Ladder)
+    return fmt::format("every rung (float, double, long double, float128, mpfr {} bits)", bits);
+  std::string s(scalarName(r.scalar));
+  if (r.scalar == ScalarKind::Mpfr) s += fmt::format(" ({} bits)", bits);
+  if (r.study && r.study->runsIn() == RunsIn::Double)
+    s += " (runs in double: " + (r.study->whyDouble.empty() ? std::string(kWhyDouble) : r.study->whyDouble) + ")";
+  return s;
+}
+
 // ---- JSON ----------------------------------------------------------------------------------
 namespace {
 
@@ -278,10 +290,25 @@ using nlohmann::json;
 
 json finiteOrNull(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
 
-std::string scalarLabel(const StudyResult& r) {
-  std::string s(scalarName(r.scalar));
-  if (r.scalar == ScalarKind::Mpfr) s += fmt::format(" ({} bits)", mpfrBits());
-  return s;
+std::string scalarLabel(const StudyResult& r) { return ranInText(r); }
+
+json tradeObject(const TradeTable& t) {
+  json rungs = json::array();
+  for (const auto& r : t.rungs)
+    rungs.push_back({{"scalar", r.scalar},
+                     {"samples", r.samples},
+                     {"median_seconds", r.medianSeconds},
+                     {"p95_seconds", r.p95Seconds},
+                     {"worst_error", finiteOrNull(r.worstError)},
+                     {"worst_error_text", r.worstErrorText},
+                     {"escalated", r.escalated},
+                     {"escalated_to", r.escalatedTo.empty() ? json(nullptr) : json(r.escalatedTo)},
+                     {"comment", r.comment}});
+  return {{"solver", t.solver},
+          {"sample", t.sample},
+          {"error_label", t.errorLabel},
+          {"figure", t.figure.empty() ? json(nullptr) : json(t.figure)},
+          {"rungs", std::move(rungs)}};
 }
 
 json studyObject(const StudyResult& r) {
@@ -292,23 +319,32 @@ json studyObject(const StudyResult& r) {
                       {"got", c.got},
                       {"error", finiteOrNull(c.error)},
                       {"tolerance", finiteOrNull(c.tolerance)},
+                      {"error_text", c.errorText},
+                      {"tolerance_text", c.toleranceText},
                       {"seconds", c.seconds},
                       {"passed", c.passed}});
   json figures = json::array();
   for (const auto& f : r.figures) figures.push_back({{"file", f.file}, {"caption", f.caption}});
   const Study* s = r.study;
-  return {{"id", s ? s->id : ""},
+  json trades = json::array();
+  for (const auto& t : r.trades) trades.push_back(tradeObject(t));
+  json j = {{"id", s ? s->id : ""},
           {"title", s ? s->title : ""},
           {"source", s ? s->source : ""},
           {"chapter", s ? s->chapter : ""},
           {"scalar_generic", s ? s->scalarGeneric : false},
           {"passed", r.passed()},
           {"seconds", r.seconds},
+          {"runs_in", s ? runsInText(*s) : std::string()},
           {"scalar", std::string(scalarName(r.scalar))},
           {"error", r.error.empty() ? json(nullptr) : json(r.error)},
           {"checks", std::move(checks)},
           {"figures", std::move(figures)},
-          {"notes", r.notes}};
+          {"notes", r.notes},
+          {"trade", std::move(trades)}};
+  // The precision the *_text numbers were written in (read them back at it: readJsonNumber).
+  if (r.scalar == ScalarKind::Mpfr || (s && s->runsIn() == RunsIn::Ladder)) j["bits"] = r.mpfrBits;
+  return j;
 }
 
 std::string dump(const json& j, int indent) {
@@ -579,8 +615,7 @@ void writeStudy(std::ostringstream& h, const StudyResult& r, const Page& page) {
     for (const auto& l : page.errataOf.at(s.id)) h << "<span class=\"tag\">" << e(l) << "</span>";
   h << "</div>\n<p class=\"study-title\">" << e(s.title) << "</p>\n";
   std::string meta = e(s.source.empty() ? "no source" : s.source);
-  meta += " · scalar " + e(scalarLabel(r));
-  if (!s.scalarGeneric) meta += " (not scalar-generic: runs in double)";
+  meta += " · ran in " + e(scalarLabel(r));
   meta += fmt::format(" · {} check{}", r.checks.size(), r.checks.size() == 1 ? "" : "s");
   if (checksFailed) meta += fmt::format(", <b style=\"color:var(--fail)\">{} failed</b>", checksFailed);
   meta += " · " + e(formatSeconds(r.seconds));
@@ -608,7 +643,8 @@ void writeStudy(std::ostringstream& h, const StudyResult& r, const Page& page) {
       h << "<tr class=\"" << (c.passed ? "pass" : "fail") << "\"><td class=\"idx\">" << ++k
         << "</td><td class=\"cname\">" << e(c.name) << "</td><td class=\"value\">" << e(c.expected)
         << "</td><td class=\"value\">" << e(c.got) << "</td><td class=\"num mono\">"
-        << e(formatShort(c.error)) << "</td><td class=\"num mono\">" << e(formatShort(c.tolerance))
+        << "<span title=\"" << e(c.errorText) << "\">" << e(formatShort(c.error)) << "</span></td><td class=\"num mono\"><span title=\""
+        << e(c.toleranceText) << "\">" << e(formatShort(c.tolerance)) << "</span>"
         << "</td><td class=\"num\">" << e(formatSeconds(c.seconds)) << "</td><td class=\"result\">"
         << (c.passed ? "PASS" : "FAIL") << "</td></tr>\n";
     }
@@ -800,8 +836,8 @@ std::string reportHtml(const ReportInfo& info, const std::vector<StudyResult>& r
                             page.src.errata.size(), page.errataOf.size()));
   row("Total time", e(formatSeconds(info.seconds > 0 ? info.seconds : sum.seconds)));
   row("Scalar", e(info.scalar + (info.mpfrBits > 0 ? fmt::format(" ({} bits)", info.mpfrBits) : "")) +
-                    " <span style=\"color:var(--muted)\">(studies that are not scalar-generic run "
-                    "in double)</span>");
+                    " <span style=\"color:var(--muted)\">(each study's header says what it ran in: the "
+                    "scalar-generic ones in this scalar, the others in double, the speed/accuracy studies in every rung)</span>");
   row("Date", e(info.date));
   row("Machine", e(info.machine));
   row("Compiler", e(info.compiler));
@@ -823,6 +859,7 @@ std::string reportHtml(const ReportInfo& info, const std::vector<StudyResult>& r
 
   // Sections a caller adds (ReportSection), then the errata index; hidden while filtering.
   h << "<div class=\"hide-when-filtering\">\n";
+  h << speedAccuracySectionHtml(results);
   for (const auto& s : sections)
     h << "<section class=\"extra\" id=\"" << e(s.id) << "\">\n<h2>" << e(s.title) << "</h2>\n" << s.html
       << "\n</section>\n";
@@ -924,8 +961,7 @@ std::string formatStudyText(const StudyResult& r, const TextOptions& o) {
          colored(s.id, "1", o.color) + " — " + s.title + "\n";
   std::string meta = "      " + (s.source.empty() ? std::string("no source") : s.source);
   if (!s.chapter.empty()) meta += " · " + s.chapter;
-  meta += " · scalar " + scalarLabel(r);
-  if (!s.scalarGeneric) meta += " (not scalar-generic: runs in double)";
+  meta += " · ran in " + scalarLabel(r);
   meta += " · " + formatSeconds(r.seconds) + "\n";
   out += meta;
 
@@ -967,10 +1003,22 @@ std::string formatStudyText(const StudyResult& r, const TextOptions& o) {
         out += indent + "    expected = " + c.expected + "\n";
         out += indent + "    got      = " + c.got + "\n";
       }
+      // The columns show 3 digits; the scalar's own digits of error and tolerance follow when
+      // they say more (long double, float128, mpfr, or a double the 3 digits round).
+      if (c.errorText != formatShort(c.error) || c.toleranceText != formatShort(c.tolerance))
+        out += indent + "    error = " + c.errorText + ", tolerance = " + c.toleranceText + "\n";
     }
   }
   if (!r.error.empty()) out += "      " + colored("error: ", "1;31", o.color) + r.error + "\n";
   for (const auto& n : r.notes) out += "      note: " + n + "\n";
+  for (const auto& t : r.trades) {
+    std::string table = tradeText(t);
+    for (std::size_t a = 0; a < table.size();) {
+      const std::size_t b = table.find('\n', a);
+      out += "      " + table.substr(a, b - a) + "\n";
+      a = b == std::string::npos ? table.size() : b + 1;
+    }
+  }
   for (const auto& f : r.figures) {
     const std::string path = o.outDir.empty() ? f.file : (o.outDir / f.file).string();
     out += "      figure: " + path + " — " + f.caption + "\n";
@@ -1003,14 +1051,24 @@ std::string formatStudyList(const std::vector<const Study*>& studies) {
   std::string out = padRight("ID", wId) + "  " + padRight("title", wTitle) + "  " +
                     padRight("source", wSource) + "  scalars  chapter\n";
   out += std::string(wId + wTitle + wSource + 6, '-') + "  -------  -------\n";
-  int generic = 0;
+  int generic = 0, ladder = 0;
+  std::map<std::string, int> why;
   for (const Study* s : studies) {
-    generic += s->scalarGeneric ? 1 : 0;
+    const RunsIn in = s->runsIn();
+    generic += in == RunsIn::Scalar;
+    ladder += in == RunsIn::Ladder;
+    if (in == RunsIn::Double) ++why[s->whyDouble.empty() ? std::string(kWhyDouble) : s->whyDouble];
     out += padRight(s->id, wId) + "  " + fit(s->title, wTitle) + "  " + padRight(s->source, wSource) +
-           "  " + (s->scalarGeneric ? "all    " : "double ") + "  " + s->chapter + "\n";
+           "  " + (in == RunsIn::Scalar ? "all    " : in == RunsIn::Ladder ? "ladder " : "double ") + "  " +
+           s->chapter + "\n";
   }
-  out += fmt::format("{} stud{} ({} scalar-generic: they honour --scalar; the others run in double)\n",
-                     studies.size(), studies.size() == 1 ? "y" : "ies", generic);
+  out += fmt::format("{} stud{}: {} scalar-generic (they run in --scalar), {} speed/accuracy (they run every "
+                     "rung, mpfr at --bits), {} in double:\n",
+                     studies.size(), studies.size() == 1 ? "y" : "ies", generic, ladder,
+                     int(studies.size()) - generic - ladder);
+  std::vector<std::pair<std::string, int>> reasons(why.begin(), why.end());
+  std::stable_sort(reasons.begin(), reasons.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
+  for (const auto& [text, n] : reasons) out += fmt::format("  {:>4} {}\n", n, text);
   return out;
 }
 
@@ -1021,8 +1079,8 @@ std::string studyListJson(const std::vector<const Study*>& studies) {
                  {"title", s->title},
                  {"source", s->source},
                  {"chapter", s->chapter},
-                 {"scalar_generic", s->scalarGeneric},
-                 {"runs_in", s->scalarGeneric ? "--scalar" : "double"}});  // the text's `scalars` column
+                 {"scalar_generic", s->runsIn() == RunsIn::Scalar},
+                 {"runs_in", runsInText(*s)}});  // "--scalar", "every rung: …" or "double: <why>"
   return a.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 

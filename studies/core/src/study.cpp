@@ -10,10 +10,14 @@ Context::Context(ScalarKind scalar, std::filesystem::path reportDir, bool makeFi
       last_(std::chrono::steady_clock::now()) {}
 
 bool Context::record(const std::string& name, const std::string& expected, const std::string& got,
-                     double error, double tolerance, bool passed) {
+                     double error, double tolerance, bool passed, std::string errorText,
+                     std::string toleranceText) {
   const auto now = std::chrono::steady_clock::now();
   const double secs = std::chrono::duration<double>(now - last_).count();
-  checks_.push_back({name, expected, got, error, tolerance, secs, passed});
+  if (errorText.empty()) errorText = io::numberText(error);
+  if (toleranceText.empty()) toleranceText = io::numberText(tolerance);
+  checks_.push_back({name, expected, got, error, tolerance, std::move(errorText), std::move(toleranceText),
+                     secs, passed});
   last_ = std::chrono::steady_clock::now();
   return passed;
 }
@@ -39,6 +43,23 @@ void Context::figure(const std::string& fileName, const std::string& caption) {
 }
 
 void Context::note(const std::string& text) { notes_.push_back(text); }
+
+void Context::trade(TradeTable table, const std::string& figureFile, const std::string& caption) {
+  if (makeFigures_ && !figureFile.empty() && tradeFigure(table, figurePath(figureFile)) > 0) {
+    figure(figureFile, caption);
+    table.figure = "figures/" + figureFile;
+  }
+  trades_.push_back(std::move(table));
+}
+
+std::string runsInText(const Study& s) {
+  switch (s.runsIn()) {
+    case RunsIn::Scalar: return "--scalar";
+    case RunsIn::Ladder: return "every rung: float, double, long double, float128, mpfr at --bits (a speed/accuracy study)";
+    case RunsIn::Double: break;
+  }
+  return "double: " + (s.whyDouble.empty() ? std::string(kWhyDouble) : s.whyDouble);
+}
 
 bool Context::passed() const {
   return std::all_of(checks_.begin(), checks_.end(), [](const Check& c) { return c.passed; });
@@ -80,6 +101,7 @@ StudyResult runStudy(const Study& s, ScalarKind scalar, const std::filesystem::p
   StudyResult r;
   r.study = &s;
   r.scalar = s.scalarGeneric ? scalar : ScalarKind::Double;
+  r.mpfrBits = mpfrBits();  // before the run: a study may change the precision for a reference
   Context ctx(r.scalar, reportDir, makeFigures);
   const auto t0 = std::chrono::steady_clock::now();
   try {
@@ -91,6 +113,7 @@ StudyResult runStudy(const Study& s, ScalarKind scalar, const std::filesystem::p
   r.checks = ctx.checks();
   r.figures = ctx.figures();
   r.notes = ctx.notes();
+  r.trades = ctx.trades();
   if (r.checks.empty() && r.error.empty()) r.error = "the study recorded no check";
   return r;
 }

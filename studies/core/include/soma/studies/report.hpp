@@ -40,8 +40,12 @@ std::string studyJson(const StudyResult& r, int indent = 2);
 /// report.json: {soma_version, scalar, mpfr_bits, date, machine, compiler, git_commit, command,
 /// seconds, summary:{studies, studies_passed, studies_failed, checks, checks_passed,
 /// checks_failed}, studies:[{id,title,source,chapter,passed,seconds,scalar,error,
-/// checks:[{name,expected,got,error,tolerance,seconds,passed}], figures:[{file,caption}],notes}]}.
-/// A non-finite error/tolerance is written as null.
+/// runs_in,bits (mpfr and speed/accuracy studies), checks:[{name,expected,got,error,tolerance,
+/// error_text,tolerance_text,seconds,passed}], figures:[{file,caption}],notes,trade:[{solver,sample,
+/// error_label,figure,rungs:[{scalar,samples,median_seconds,p95_seconds,worst_error,
+/// worst_error_text,escalated,escalated_to,comment}]}]}]}. error/tolerance are doubles (null when
+/// not finite); error_text/tolerance_text, and expected/got of a numeric check, are the values in
+/// the scalar's digits (io::numberText), read back exactly by io::readJsonNumber in that scalar.
 std::string reportJson(const ReportInfo& info, const std::vector<StudyResult>& results);
 
 /// A section of index.html that a caller adds (e.g. "Speed vs accuracy"): placed after the summary,
@@ -52,6 +56,14 @@ struct ReportSection {
   std::string title;
   std::string html;
 };
+
+/// What the study ran in, for its header: "double", "mpfr (256 bits)", "double (runs in double:
+/// <why>)", "every rung (…, mpfr 256 bits)".
+std::string ranInText(const StudyResult& r);
+
+/// The report's "speed vs accuracy" section (speed_accuracy_section.cpp): every study's trade
+/// tables (Context::trade) with their figures; empty when no study recorded one.
+std::string speedAccuracySectionHtml(const std::vector<StudyResult>& results);
 
 /// index.html: one page (inline CSS and script; lunr.min.js beside it) with a sidebar (search,
 /// filters by chapter, verdict, erratum and scalar; the contents by chapter), the summary, the
@@ -83,7 +95,8 @@ struct TextOptions {
 /// notes and figure paths.
 std::string formatStudyText(const StudyResult& r, const TextOptions& options = {});
 /// `soma study list`: an aligned table (ID, title, source, chapter, scalars) and its JSON form
-/// [{id, title, source, chapter, scalar_generic}].
+/// [{id, title, source, chapter, scalar_generic, runs_in}] (runs_in: "--scalar", "every rung: …"
+/// or "double: <why>").
 std::string formatStudyList(const std::vector<const Study*>& studies);
 std::string studyListJson(const std::vector<const Study*>& studies);
 

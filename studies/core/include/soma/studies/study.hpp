@@ -1,7 +1,13 @@
 #pragma once
 // A study reproduces one catalogue item (DESIGN §4): it computes, then records checks
 // {name, expected, got, error, tolerance, seconds}; any failed check fails the study.
+// Every number a check records is kept in the working scalar's digits (io::numberText: shortest
+// round-trip text for float/double, 21/36/⌊p·log10 2⌋+2 digits for long double/float128/mpfr), so
+// report.json and the terminal carry what the scalar computed (issue 22); error and tolerance are
+// also kept as doubles, for sorting and plots.
 #include "soma/algebra/scalar.hpp"
+#include "soma/io/json_number.hpp"
+#include "soma/studies/trade.hpp"
 
 #include <chrono>
 #include <filesystem>
@@ -16,8 +22,10 @@ struct Check {
   std::string name;      ///< what was checked, e.g. "log(exp(ξ)) = ξ, θ = π − 1e-8"
   std::string expected;  ///< the reference value as text (book value, identity, other method)
   std::string got;       ///< soma's value as text
-  double error = 0;      ///< |got − expected| (or the residual of an identity)
-  double tolerance = 0;  ///< the check passes when error ≤ tolerance
+  double error = 0;      ///< |got − expected| (or the residual of an identity), rounded to double
+  double tolerance = 0;  ///< the check passes when error ≤ tolerance, rounded to double
+  std::string errorText;      ///< error in the working scalar's digits (io::numberText)
+  std::string toleranceText;  ///< tolerance in the working scalar's digits
   double seconds = 0;    ///< wall time since the previous check (the work that produced it)
   bool passed = false;
 };
@@ -40,14 +48,15 @@ class Context {
   bool checkNear(const std::string& name, const S& expected, const S& got, const S& tolerance) {
     using std::abs;
     const S err = abs(got - expected);
-    return record(name, toString(expected), toString(got), toDouble(err), toDouble(tolerance),
-                  isFinite(err) && err <= tolerance);
+    return record(name, io::numberText(expected), io::numberText(got), toDouble(err), toDouble(tolerance),
+                  isFinite(err) && err <= tolerance, io::numberText(err), io::numberText(tolerance));
   }
   /// A residual check of an identity: passes when 0 ≤ residual ≤ tolerance.
   template <class S>
   bool checkResidual(const std::string& name, const S& residual, const S& tolerance) {
-    return record(name, "0", toString(residual), toDouble(residual), toDouble(tolerance),
-                  isFinite(residual) && residual <= tolerance);
+    return record(name, "0", io::numberText(residual), toDouble(residual), toDouble(tolerance),
+                  isFinite(residual) && residual <= tolerance, io::numberText(residual),
+                  io::numberText(tolerance));
   }
   /// An exact check (a count, a classification): passes when expected == got.
   bool checkEqual(const std::string& name, long long expected, long long got);
@@ -58,13 +67,28 @@ class Context {
   template <class S>
   bool checkPrintedFails(const std::string& name, const std::string& erratum, const S& residual,
                          const std::type_identity_t<S>& threshold) {
-    return record(name + " [as printed]", "fails (erratum " + erratum + ")", "residual " + toString(residual, 6),
-                  toDouble(residual), toDouble(threshold), isFinite(residual) && residual > threshold);
+    return record(name + " [as printed]", "fails (erratum " + erratum + ")", "residual " + io::numberText(residual),
+                  toDouble(residual), toDouble(threshold), isFinite(residual) && residual > threshold,
+                  io::numberText(residual), io::numberText(S(threshold)));
   }
   /// A check whose error the study computed itself (e.g. a printed formula failing by design,
-  /// recorded as `expected: "fails (erratum E4.8)"`).
+  /// recorded as `expected: "fails (erratum E4.8)"`). errorText/toleranceText: the two numbers in
+  /// the working scalar's digits; empty = the double's shortest text.
   bool record(const std::string& name, const std::string& expected, const std::string& got,
-              double error, double tolerance, bool passed);
+              double error, double tolerance, bool passed, std::string errorText = {},
+              std::string toleranceText = {});
+  /// The same with error and tolerance in the scalar S they were computed in.
+  template <class S>
+  bool recordIn(const std::string& name, const std::string& expected, const std::string& got,
+                const S& error, const std::type_identity_t<S>& tolerance, bool passed) {
+    return record(name, expected, got, toDouble(error), toDouble(tolerance), passed,
+                  io::numberText(error), io::numberText(S(tolerance)));
+  }
+  /// A speed/accuracy table (trade.hpp): shown under the study and gathered in the report's
+  /// "speed vs accuracy" section. With a figure file name and figures on, its figure too
+  /// (tradeFigure: time against error, one point per rung), registered with the caption.
+  void trade(TradeTable table, const std::string& figureFile = {}, const std::string& caption = {});
+  const std::vector<TradeTable>& trades() const { return trades_; }
 
   /// Absolute path for a figure file name (under <reportDir>/figures/); register it with figure().
   std::filesystem::path figurePath(const std::string& fileName) const;
@@ -85,7 +109,19 @@ class Context {
   std::vector<Check> checks_;
   std::vector<Figure> figures_;
   std::vector<std::string> notes_;
+  std::vector<TradeTable> trades_;
 };
+
+/// What `--scalar` does for a study (`soma study list`'s `runs_in`, the report header).
+enum class RunsIn {
+  Scalar,  ///< scalar-generic: runs in the asked scalar (--scalar, --bits)
+  Double,  ///< runs in double whatever is asked; Study::whyDouble says why
+  Ladder,  ///< a speed/accuracy study: runs every rung itself (mpfr at --bits), --scalar aside
+};
+
+/// The reason a SOMA_STUDY_DOUBLE study gives when its chapter or file does not give its own
+/// (a `kWhyDouble` in the chapter's or the file's namespace hides this one).
+inline constexpr const char* kWhyDouble = "not converted yet: its body is written in double";
 
 struct Study {
   std::string id;       ///< catalogue ID, e.g. "GF-4.4.2-se3-log"
@@ -94,7 +130,15 @@ struct Study {
   std::string chapter;  ///< report section, e.g. "GF 4 — Lie algebra"
   bool scalarGeneric = false;  ///< honours --scalar; otherwise it runs in double
   std::function<void(Context&)> run;
+  /// Not scalar-generic: why it runs in double (a double-only dependency, figures of a
+  /// double-only library part, not converted yet); shown by `soma study list` and the report.
+  std::string whyDouble = {};
+  /// A speed/accuracy study (RunsIn::Ladder): it runs every rung of the ladder itself.
+  bool ladder = false;
+  RunsIn runsIn() const { return ladder ? RunsIn::Ladder : scalarGeneric ? RunsIn::Scalar : RunsIn::Double; }
 };
+/// "--scalar", "every rung (…)" or "double: <why>": the `runs_in` of `soma study list --json`.
+std::string runsInText(const Study& s);
 
 /// All registered studies, sorted by id.
 const std::vector<Study>& registry();
@@ -115,6 +159,8 @@ struct StudyResult {
   std::vector<Check> checks;
   std::vector<Figure> figures;
   std::vector<std::string> notes;
+  std::vector<TradeTable> trades;
+  int mpfrBits = 0;   ///< the mpfr precision of the run (the asked --bits)
   double seconds = 0;
   std::string error;  ///< an exception thrown by the study (counts as a failure)
   bool passed() const;
@@ -137,8 +183,9 @@ StudyResult runStudy(const Study& s, ScalarKind scalar, const std::filesystem::p
 /// The short form, in a chapter file that defines `kChapter` (its report section), for a study
 /// whose body FN(Context&) (a function or a lambda) runs in double:
 ///   SOMA_STUDY_DOUBLE("GF-6.1-meet-condition", "Two lines meet iff …", "GF §6.1", meetCondition);
-#define SOMA_STUDY_DOUBLE(ID, TITLE, SOURCE, ...) \
-  SOMA_STUDY({.id = ID, .title = TITLE, .source = SOURCE, .chapter = kChapter, .scalarGeneric = false, .run = __VA_ARGS__})
+#define SOMA_STUDY_DOUBLE(ID, TITLE, SOURCE, ...)                                                    \
+  SOMA_STUDY({.id = ID, .title = TITLE, .source = SOURCE, .chapter = kChapter, .scalarGeneric = false, \
+              .run = __VA_ARGS__, .whyDouble = kWhyDouble})
 /// The short form for a study whose body is the function template FN<S>(Context&), run in the
 /// scalar asked for (--scalar):
 ///   SOMA_STUDY_SCALAR("GF-4.4.2-se3-log", "…", "GF §4.4.2", se3Log);
