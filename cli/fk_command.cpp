@@ -2,6 +2,7 @@
 // singularity measures of the configuration, in any scalar type.
 #include "command.hpp"
 #include "json_output.hpp"
+#include "posture_figure.hpp"
 #include "scalar_options.hpp"
 
 #include "soma/io/json_number.hpp"
@@ -20,7 +21,7 @@ namespace soma::cli {
 namespace {
 
 template <class S> int fkImpl(const std::filesystem::path& file, const std::string& tip, const std::string& joints, bool json,
-                              std::ostream& out) {
+                              std::ostream& out, const FigureFiles& fig) {
   const io::RobotFile<S> rf = io::readAnyRobot<S>(file, tip);
   const JointVector<S> q = io::parseJoints<S>(joints, rf);
   const auto t0 = std::chrono::steady_clock::now();
@@ -28,6 +29,7 @@ template <class S> int fkImpl(const std::filesystem::path& file, const std::stri
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const auto sm = singularityMeasures(rf.robot, q);
   const Mat3<S> R = T.rotation();
+  writeRobotFigures<S>(rf.robot, {q}, rf.degrees, rf.robot.name() + " at the joints given", fig);
   if (json) {
     nlohmann::json j;
     j["robot"] = file.string();
@@ -61,8 +63,8 @@ template <class S> int fkImpl(const std::filesystem::path& file, const std::stri
 }
 
 int fkCommand(const std::filesystem::path& robot, const std::string& joints, ScalarKind scalar,
-              bool json, std::ostream& out, const std::string& tip) {
-  return withScalar(scalar, [&]<class S>() { return fkImpl<S>(robot, tip, joints, json, out); });
+              bool json, std::ostream& out, const std::string& tip, const FigureFiles& fig) {
+  return withScalar(scalar, [&]<class S>() { return fkImpl<S>(robot, tip, joints, json, out, fig); });
 }
 
 class FkCommand : public Command {
@@ -76,14 +78,17 @@ class FkCommand : public Command {
         .mustBeGiven();
     scalar_.declare(spec);
     spec.flag("--json", json_, "print one JSON object");
+    spec.add("--png", fig_.png, "write the figure (PNG): the robot at each posture, a panel each");
+    spec.add("--svg", fig_.svg, "write the figure as SVG (a line drawing of the same panels)");
   }
   int run(const Spec&, const Invocation&) override {
-    return fkCommand(robot_, joints_, scalar_.apply(), json_, std::cout, tip_);
+    return fkCommand(robot_, joints_, scalar_.apply(), json_, std::cout, tip_, fig_);
   }
 
  private:
   std::string robot_, joints_, tip_;
   ScalarOptions scalar_;
+  FigureFiles fig_;
   bool json_ = false;
 };
 

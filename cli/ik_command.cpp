@@ -3,6 +3,7 @@
 // and the time.
 #include "command.hpp"
 #include "json_output.hpp"
+#include "posture_figure.hpp"
 #include "scalar_options.hpp"
 
 #include "soma/algebra/errors.hpp"
@@ -24,7 +25,7 @@ namespace {
 
 template <class S>
 int ikImpl(const std::filesystem::path& file, const std::string& tip, const std::filesystem::path& poseFile,
-           IkMethod method, bool json, std::ostream& out) {
+           IkMethod method, bool json, std::ostream& out, const FigureFiles& fig) {
   const io::RobotFile<S> rf = io::readAnyRobot<S>(file, tip);
   const SE3<S> target = io::readPose<S>(poseFile);
   IkOptions options;
@@ -41,6 +42,10 @@ int ikImpl(const std::filesystem::path& file, const std::string& tip, const std:
     if (!(r <= Tolerance<S>::sqrtEpsilon())) ok = false;
   // docs/cli.md: 1 a residual above its bound, 3 no posture (the reason says why), else 0.
   const int exitCode = !ok ? 1 : sol.count() == 0 ? 3 : 0;
+  writeRobotFigures<S>(rf.robot, sol.postures, rf.degrees,
+                       fmt::format("{}: {} posture(s) for {} ({})", rf.robot.name(), sol.count(), poseFile.filename().string(),
+                                   sol.self_motion_dimension > 0 ? "representatives of a self-motion" : sol.method),
+                       fig);
   if (json) {
     nlohmann::json j;
     j["robot"] = file.string();
@@ -94,10 +99,10 @@ int ikImpl(const std::filesystem::path& file, const std::string& tip, const std:
 
 int ikCommand(const std::filesystem::path& robot, const std::filesystem::path& pose,
               const std::string& method, ScalarKind scalar, bool json, std::ostream& out,
-              const std::string& tip) {
+              const std::string& tip, const FigureFiles& fig) {
   const auto m = parseIkMethod(method);
   if (!m) throw InvalidInput("--method: \"" + method + "\" is not one of " + ikMethodNames());
-  return withScalar(scalar, [&]<class S>() { return ikImpl<S>(robot, tip, pose, *m, json, out); });
+  return withScalar(scalar, [&]<class S>() { return ikImpl<S>(robot, tip, pose, *m, json, out, fig); });
 }
 
 class IkCommand : public Command {
@@ -112,14 +117,17 @@ class IkCommand : public Command {
         .withDefault();
     scalar_.declare(spec);
     spec.flag("--json", json_, "print one JSON object");
+    spec.add("--png", fig_.png, "write the figure (PNG): the robot at each posture, a panel each");
+    spec.add("--svg", fig_.svg, "write the figure as SVG (a line drawing of the same panels)");
   }
   int run(const Spec&, const Invocation&) override {
-    return ikCommand(robot_, pose_, method_, scalar_.apply(), json_, std::cout, tip_);
+    return ikCommand(robot_, pose_, method_, scalar_.apply(), json_, std::cout, tip_, fig_);
   }
 
  private:
   std::string robot_, pose_, method_ = "auto", tip_;
   ScalarOptions scalar_;
+  FigureFiles fig_;
   bool json_ = false;
 };
 

@@ -3,6 +3,7 @@
 // count (40), the complex count found, each posture's residual and the time.
 #include "command.hpp"
 #include "json_output.hpp"
+#include "posture_figure.hpp"
 #include "scalar_options.hpp"
 
 #include "soma/algebra/errors.hpp"
@@ -33,7 +34,7 @@ json pointsJson(const auto& pts) {
 
 
 template <class S>
-int stewartImpl(const std::filesystem::path& file, StewartMethod method, bool json_, std::ostream& out) {
+int stewartImpl(const std::filesystem::path& file, StewartMethod method, bool json_, std::ostream& out, const FigureFiles& fig) {
   const StewartPlatform<S> P = io::readPlatform<S>(file);
   StewartOptions options;
   options.method = method;
@@ -42,6 +43,7 @@ int stewartImpl(const std::filesystem::path& file, StewartMethod method, bool js
   bool ok = numeric || sol.complexCount() == sol.expected_count;
   for (const auto& r : sol.residuals)
     if (!(r <= Tolerance<S>::sqrtEpsilon())) ok = false;
+  writePlatformFigures<S>(P, sol.postures, fmt::format("{}: {} real posture(s)", file.filename().string(), sol.count()), fig);
   if (json_) {
     json j;
     j["platform_file"] = file.string();
@@ -93,10 +95,10 @@ int stewartImpl(const std::filesystem::path& file, StewartMethod method, bool js
 
 
 int stewartCommand(const std::filesystem::path& platform, const std::string& method, ScalarKind scalar, bool json,
-                   std::ostream& out) {
+                   std::ostream& out, const FigureFiles& fig) {
   const auto m = parseStewartMethod(method);
   if (!m) throw InvalidInput("--method: \"" + method + "\" is not one of " + stewartMethodNames());
-  return withScalar(scalar, [&]<class S>() { return stewartImpl<S>(platform, *m, json, out); });
+  return withScalar(scalar, [&]<class S>() { return stewartImpl<S>(platform, *m, json, out, fig); });
 }
 
 
@@ -112,14 +114,17 @@ class StewartCommand : public Command {
         .withDefault();
     scalar_.declare(spec);
     spec.flag("--json", json_, "print one JSON object");
+    spec.add("--png", fig_.png, "write the figure (PNG): the platform at each real posture, a panel each");
+    spec.add("--svg", fig_.svg, "write the figure as SVG (a line drawing of the same panels)");
   }
   int run(const Spec&, const Invocation&) override {
-    return stewartCommand(file_, method_, scalar_.apply(), json_, std::cout);
+    return stewartCommand(file_, method_, scalar_.apply(), json_, std::cout, fig_);
   }
 
  private:
   std::string file_, method_ = "homotopy";
   ScalarOptions scalar_;
+  FigureFiles fig_;
   bool json_ = false;
 };
 
