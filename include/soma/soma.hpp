@@ -33,6 +33,7 @@
 // geometry
 #include <soma/geometry/cuspidal/cuspidality.hpp>
 #include <soma/geometry/cuspidal/cusps.hpp>
+#include <soma/geometry/cuspidal/decomposition.hpp>
 #include <soma/geometry/cuspidal/parameter_map.hpp>
 #include <soma/geometry/cuspidal/singular_set.hpp>
 #include <soma/geometry/cuspidal/witness.hpp>
@@ -100,6 +101,7 @@
 #include <soma/geometry/serial/example_robots.hpp>
 #include <soma/geometry/serial/general_6r.hpp>
 #include <soma/geometry/serial/ik.hpp>
+#include <soma/geometry/serial/self_motion.hpp>
 #include <soma/geometry/serial/ik_solution.hpp>
 #include <soma/geometry/serial/serial_robot.hpp>
 #include <soma/geometry/serial/standard_dh.hpp>
@@ -144,5 +146,7 @@
 #include <soma/render/render.hpp>
 #include <soma/render/renderer.hpp>
 #include <soma/render/scene.hpp>
+#include <soma/render/panels.hpp>
+#include <soma/render/scene_js.hpp>
 #include <soma/render/shapes.hpp>
 #include <soma/render/svg.hpp>

@@ -21,6 +21,14 @@ void check(const PanelGrid& g) {
     throw std::invalid_argument("soma::render::PanelGrid: panel size or columns out of range");
 }
 
+/// The banner's font size: 22 px, smaller when the title would not fit the grid's width (about
+/// 0.55 em per character of DejaVu Sans).
+double bannerPixels(const std::string& title, int width) {
+  std::size_t chars = 0;
+  for (const unsigned char ch : title) chars += (ch & 0xC0) != 0x80;  // UTF-8 code points
+  return std::clamp(double(width) / (0.58 * double(std::max<std::size_t>(chars, 1))), 10.0, 22.0);
+}
+
 int columnsOf(const PanelGrid& g) { return std::min<int>(g.columns, int(g.panels.size())); }
 int rowsOf(const PanelGrid& g) { return (int(g.panels.size()) + columnsOf(g) - 1) / columnsOf(g); }
 
@@ -35,6 +43,8 @@ Camera commonCamera(const PanelGrid& g) {
     all.add(s.frames);
     all.add(s.arrows);
   }
+  all.title = "room for the panel titles";  // Camera::fit leaves room at the top for a title
+  all.titlePixelHeight = 16;
   FitOptions fo;
   fo.width = g.panelWidth;
   fo.height = g.panelHeight;
@@ -75,7 +85,7 @@ Image renderPanels(const PanelGrid& g) {
   {
     Scene head;
     head.title = g.title;
-    head.titlePixelHeight = 22;
+    head.titlePixelHeight = bannerPixels(g.title, grid.width);
     RenderOptions o;
     o.width = grid.width;
     o.height = kBanner;
@@ -85,7 +95,7 @@ Image renderPanels(const PanelGrid& g) {
   const Camera cam = commonCamera(g);
   for (std::size_t k = 0; k < g.panels.size(); ++k) {
     Scene s = g.panels[k];
-    if (s.titlePixelHeight > 18) s.titlePixelHeight = 16;
+    s.titlePixelHeight = 13;  // a panel title of ~60 characters fits 420 px
     RenderOptions o;
     o.width = g.panelWidth;
     o.height = g.panelHeight;
@@ -109,7 +119,7 @@ std::string panelsSvg(const PanelGrid& g) {
   // sceneSvg's pixel scene: x right, y up, z orders the drawing (low first): z = −depth.
   Scene out;
   out.title = g.title;
-  out.titlePixelHeight = 22;
+  out.titlePixelHeight = bannerPixels(g.title, W);
   for (std::size_t k = 0; k < g.panels.size(); ++k) {
     const Scene& s = g.panels[k];
     const double x0 = double(k % std::size_t(cols)) * g.panelWidth;
@@ -161,7 +171,7 @@ std::string panelsSvg(const PanelGrid& g) {
       t.offset = Eigen::Vector2d::Zero();
       t.hAlign = HAlign::Center;
       t.vAlign = VAlign::Top;
-      t.pixelHeight = 15;
+      t.pixelHeight = 13;
       out.add(std::move(t));
     }
   }

@@ -7,7 +7,7 @@
 
 #include "support/repo_file.hpp"
 
-#include <catch2/catch_test_macros.hpp>
+#include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
 #include <array>

@@ -18,7 +18,7 @@ struct PanelGrid {
   std::string title;           ///< the banner above the panels
   std::vector<Scene> panels;   ///< each panel's scene; its `title` is drawn at the panel's top
   int panelWidth = 420, panelHeight = 440, columns = 4;
-  Eigen::Vector3d view{-0.35, -1.0, -0.45};  ///< the view direction of the common camera
+  Eigen::Vector3d view{-1.0, -0.75, -0.55};  ///< the view direction of the common camera
 };
 
 /// The grid rendered (OSMesa); std::invalid_argument for no panels or a bad size.
