@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 jobs=${SOMA_FUZZ_JOBS:-2}
 build=build/fuzz/tests/fuzz
-harnesses=(robot urdf pose platform planar_scene scene differential)
+harnesses=(robot urdf pose platform planar_scene scene sweep differential)
 work=$(mktemp -d "${TMPDIR:-/tmp}/soma-fuzz.XXXXXX")
 for h in "${harnesses[@]}"; do
   if [ ! -x "$build/fuzz_$h" ]; then
