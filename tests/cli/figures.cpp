@@ -6,6 +6,7 @@
 #include "soma/render/image.hpp"
 
 #include "support/repo_file.hpp"
+#include "support/run_soma.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -23,16 +24,7 @@ namespace SOMA_UNITY_ID {
 
 namespace {
 
-std::string run(const std::string& args, int& rc) {
-  const std::string cmd = std::string(SOMA_EXE) + " " + args + " 2>/dev/null";
-  FILE* p = popen(cmd.c_str(), "r");
-  REQUIRE(p != nullptr);
-  std::string out;
-  std::array<char, 4096> buf{};
-  while (const std::size_t n = std::fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
-  rc = WEXITSTATUS(pclose(p));
-  return out;
-}
+std::string run(const std::string& args, int& rc) { return soma::test::runSoma(args, rc); }
 
 std::string slurp(const std::filesystem::path& f) {
   std::ifstream in(f, std::ios::binary);

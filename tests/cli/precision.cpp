@@ -7,6 +7,7 @@
 #include "soma/io/json_number.hpp"
 
 #include "support/repo_file.hpp"
+#include "support/run_soma.hpp"
 #include "support/scalars.hpp"
 
 #include <array>
@@ -21,17 +22,7 @@ namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (t
 using namespace soma;
 using json = nlohmann::json;
 
-/// The stdout of `soma ARGS` (SOMA_EXE, set by tests/CMakeLists.txt), and its exit code.
-std::string runSoma(const std::string& args, int& rc) {
-  const std::string cmd = std::string(SOMA_EXE) + " " + args + " 2>/dev/null";
-  FILE* p = popen(cmd.c_str(), "r");
-  REQUIRE(p != nullptr);
-  std::string out;
-  std::array<char, 4096> buf{};
-  while (const std::size_t n = std::fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
-  rc = WEXITSTATUS(pclose(p));
-  return out;
-}
+using soma::test::runSoma;
 
 json readJsonFile(const std::filesystem::path& f) {
   std::ifstream in(f);
