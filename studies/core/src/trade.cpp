@@ -1,6 +1,7 @@
 #include "soma/studies/trade.hpp"
 
 #include "soma/render/plot.hpp"
+#include "soma/render/svg.hpp"
 
 #include <fmt/format.h>
 
@@ -102,45 +103,21 @@ int tradeFigure(const TradeTable& t, const std::filesystem::path& png) {
   plot.y.max = std::pow(10.0, y1);
   plot.x.ticks = decadeTicks(x0, x1);
   plot.y.ticks = decadeTicks(y0, y1);
-  // The legend box, in fractions of the plot area (about 34 % wide, a line per rung): the first
-  // corner no point or bar falls in.
-  const double bw = 0.36, bh = 0.075 * double(pts.size()) + 0.05;
-  auto freeCorner = [&](bool right, bool top) {
-    for (const P& p : pts) {
-      const double u0 = (p.lx0 - x0) / (x1 - x0), u1 = (p.lx1 - x0) / (x1 - x0), v = (p.ly - y0) / (y1 - y0);
-      const bool inX = right ? u1 >= 1 - bw - 0.03 : u0 <= bw + 0.03;
-      const bool inY = top ? v >= 1 - bh - 0.05 : v <= bh + 0.05;
-      if (inX && inY) return false;
-    }
-    return true;
-  };
-  bool legend = true;
-  if (freeCorner(true, true)) plot.legend = rd::LegendCorner::TopRight;
-  else if (freeCorner(false, true)) plot.legend = rd::LegendCorner::TopLeft;
-  else if (freeCorner(true, false)) plot.legend = rd::LegendCorner::BottomRight;
-  else if (freeCorner(false, false)) plot.legend = rd::LegendCorner::BottomLeft;
-  else legend = false;  // every corner taken: each point labelled instead
+  // The legend prefers the top right; the plot moves it where no point, bar or text lies under it
+  // (render/plot.hpp: the other corners, the edges' middles, then outside the plot area).
+  plot.legend = rd::LegendCorner::TopRight;
   std::size_t ci = 0;
   for (const P& p : pts) {
     const rd::Color c = rd::palette::cycle(ci++);
     const double e = p.r->worstError;
     auto& bar = plot.add("", {p.r->medianSeconds, std::max(p.r->p95Seconds, p.r->medianSeconds)}, {e, e}, c);
     bar.width = 3;
-    auto& dot = plot.add(legend ? p.r->scalar : "", {p.r->medianSeconds}, {e}, c);
+    auto& dot = plot.add(p.r->scalar, {p.r->medianSeconds}, {e}, c);
     dot.line = false;
     dot.markers = true;
     dot.markerRadius = 7;
-    if (!legend) {
-      rd::PlotText label;
-      label.x = p.r->medianSeconds;
-      label.y = e;
-      label.text = p.r->scalar;
-      label.c = c;
-      label.pixelHeight = 18;
-      plot.texts.push_back(label);
-    }
   }
-  rd::renderPlotPng(plot, png, 1100, 750);
+  rd::renderPlotPngAndSvg(plot, png, 1100, 750);  // the SVG beside the PNG, as every 2-D study figure
   return int(pts.size());
 }
 
