@@ -153,6 +153,15 @@ class IkResult:
     complex_count: int
     solved_in: str
     notes: List[str] = field(default_factory=list)
+    #: why there is no posture ("out of reach: …", "joint limits: …"); empty when there is one
+    reason: str = ""
+    #: a 6R whose joint screws span fewer than 6 dimensions everywhere: its self-motion's dimension
+    #: (postures are then representatives, ``continuum`` is True, ``expected_count`` 0)
+    self_motion_dimension: int = 0
+    #: 6R robots: the generic Jacobian rank (6 unless degenerate); -1 otherwise
+    generic_rank: int = -1
+    #: general6r: the joint eliminated last ("theta3 last", …)
+    elimination: str = ""
 
     @property
     def count(self):

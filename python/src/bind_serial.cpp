@@ -59,6 +59,10 @@ template <class S> py::dict ikIn(const RobotHandle& h, const std::string& poseJs
   d["complex_count"] = sol.complex_count;
   d["solved_in"] = sol.solved_in;
   d["notes"] = sol.notes;
+  d["reason"] = sol.reason;
+  d["self_motion_dimension"] = sol.self_motion_dimension;
+  d["generic_rank"] = sol.generic_rank;
+  d["elimination"] = sol.elimination;
   return d;
 }
 

@@ -208,3 +208,23 @@ def test_bad_robot_input(robots, tmp_path):
         soma.Robot.from_file(robots / "cusp_bad_4r.json").cuspidality()
     with pytest.raises(ValueError):
         soma.Robot.from_file(robots / "arm3r.json").ik(soma.SE3(), method="general6r")
+
+
+def test_degenerate_robot_answers_its_self_motion_and_unreachable_says_why(robots):
+    """Every axis through the origin: rank 3, a 3-dimensional self-motion at every reachable pose
+    (each representative's fk checked here); a shifted pose is out of reach (issue 20 item 2)."""
+    robot = soma.Robot.from_file(robots / "concurrent6r.json")
+    home = np.eye(4)
+    r = robot.ik(home, method="general6r")
+    assert r.method == "self-motion" and r.continuum and r.self_motion_dimension == 3 and r.generic_rank == 3
+    assert r.expected_count == 0 and r.count >= 1 and r.reason == ""
+    for q in np.asarray(r.postures, dtype=float):
+        assert pose_error(robot.fk(q).matrix, home) < 1e-12
+    shifted = np.eye(4)
+    shifted[:3, 3] = [0.5, 0, 0]
+    u = robot.ik(shifted)
+    assert u.count == 0 and not u.continuum and u.reason.startswith("out of reach")
+    far = np.eye(4)
+    far[:3, 3] = [10, 0, 0]
+    p = soma.Robot.from_file(robots / "puma560.json").ik(far)
+    assert p.count == 0 and p.reason.startswith("out of reach") and p.generic_rank == 6
