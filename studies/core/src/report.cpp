@@ -29,6 +29,16 @@ namespace soma::studies {
 
 std::string_view somaVersion() { return SOMA_VERSION; }
 
+std::string studyAnchor(std::string_view id) {
+  std::string a = "study-";
+  for (char c : id) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                    c == '.' || c == '_' || c == '-';
+    a += ok ? c : '_';
+  }
+  return a;
+}
+
 // ---- UTF-8 ---------------------------------------------------------------------------------
 namespace {
 
@@ -392,16 +402,7 @@ constexpr const char* kOrbitControlsPath = "/usr/share/javascript/three/examples
 
 std::string e(std::string_view s) { return htmlEscape(s); }
 
-/// An HTML id for a study: its catalogue ID with anything outside [A-Za-z0-9._-] replaced.
-std::string anchor(std::string_view id) {
-  std::string a = "study-";
-  for (char c : id) {
-    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-                    c == '.' || c == '_' || c == '-';
-    a += ok ? c : '_';
-  }
-  return a;
-}
+std::string anchor(std::string_view id) { return studyAnchor(id); }
 
 std::string badge(bool passed) {
   return passed ? R"(<span class="badge pass">PASS</span>)" : R"(<span class="badge fail">FAIL</span>)";

@@ -10,19 +10,6 @@
 
 namespace soma::studies {
 
-namespace {
-
-std::string anchorOf(std::string_view id) {
-  std::string a = "study-";
-  for (char c : id) {
-    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-                    c == '.' || c == '_' || c == '-';
-    a += ok ? c : '_';
-  }
-  return a;
-}
-
-}  // namespace
 
 std::string speedAccuracySectionHtml(const std::vector<StudyResult>& results) {
   std::ostringstream h;
@@ -37,7 +24,7 @@ std::string speedAccuracySectionHtml(const std::vector<StudyResult>& results) {
   for (const auto& r : results)
     for (const auto& t : r.trades) {
       h << "<h3 style=\"margin-top:18px\">" << htmlEscape(t.solver) << " <span style=\"font-weight:normal\">— <a href=\"#"
-        << htmlEscape(anchorOf(r.study ? r.study->id : "")) << "\">" << htmlEscape(r.study ? r.study->id : "")
+        << htmlEscape(studyAnchor(r.study ? r.study->id : "")) << "\">" << htmlEscape(r.study ? r.study->id : "")
         << "</a></span></h3>\n";
       h << "<table class=\"checks\"><thead><tr><th>scalar</th><th>" << htmlEscape(t.sample)
         << "s</th><th>median</th><th>p95</th><th>" << htmlEscape(t.errorLabel)

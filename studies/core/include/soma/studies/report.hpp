@@ -34,6 +34,9 @@ ReportInfo collectReportInfo(ScalarKind scalar, std::string command, double seco
 
 /// Escape &, <, >, " and ' for HTML text and attribute values; invalid UTF-8 becomes U+FFFD.
 std::string htmlEscape(std::string_view text);
+/// The HTML id of a study's article in index.html: "study-" and its catalogue ID with anything
+/// outside [A-Za-z0-9._-] replaced by "_" (the report's links and its sections' links).
+std::string studyAnchor(std::string_view id);
 
 /// One study result as a JSON object (the element of report.json's "studies"), indented text.
 std::string studyJson(const StudyResult& r, int indent = 2);
