@@ -101,8 +101,10 @@
 #include <soma/geometry/serial/example_robots.hpp>
 #include <soma/geometry/serial/general_6r.hpp>
 #include <soma/geometry/serial/ik.hpp>
+#include <soma/geometry/serial/redundant_ik.hpp>
 #include <soma/geometry/serial/self_motion.hpp>
 #include <soma/geometry/serial/ik_solution.hpp>
+#include <soma/geometry/serial/joint_limits.hpp>
 #include <soma/geometry/serial/serial_robot.hpp>
 #include <soma/geometry/serial/standard_dh.hpp>
 #include <soma/geometry/statics/grasp.hpp>

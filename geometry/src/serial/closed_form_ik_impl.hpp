@@ -3,6 +3,7 @@
 // Private implementation header: soma_instantiate (cmake/SomaInstantiate.cmake) instantiates it once per scalar (one TU
 // each, so the five build in parallel; together they took ~3 min of CPU as one TU).
 #include "soma/geometry/serial/closed_form_ik.hpp"
+#include "soma/geometry/serial/joint_limits.hpp"
 
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/polynomial.hpp"
@@ -428,11 +429,12 @@ void finish(const SerialRobot<S>& robot, const SE3<S>& target, ResidualMode mode
       continue;
     }
     wrapInPlace(robot, q);
-    if (!robot.withinLimits(q)) {
+    const auto inside = shiftIntoLimits(robot, q);  // θ + 2πk where the limits lie off (−π, π]
+    if (!inside) {
       ++outside;
       continue;
     }
-    sol.postures.push_back(std::move(q));
+    sol.postures.push_back(*inside);
     sol.residuals.push_back(res);
   }
   if (outside)

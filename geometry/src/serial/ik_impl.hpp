@@ -3,6 +3,7 @@
 // completion, and the numerical methods in double polished in the working scalar. Instantiated for
 // the five scalars by soma_instantiate (geometry/CMakeLists.txt).
 #include "soma/geometry/serial/ik.hpp"
+#include "soma/geometry/serial/joint_limits.hpp"
 
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/tolerance.hpp"
@@ -148,8 +149,8 @@ template <class S> IkSolution<S> general6R(const SerialRobot<S>& robotIn, const 
   kept.postures.clear();
   kept.residuals.clear();
   for (std::size_t k = 0; k < g.count(); ++k)
-    if (robot.withinLimits(g.postures[k])) {
-      kept.postures.push_back(g.postures[k]);
+    if (const auto inside = shiftIntoLimits(robot, g.postures[k])) {  // θ + 2πk where the limits lie off (−π, π]
+      kept.postures.push_back(*inside);
       kept.residuals.push_back(g.residuals[k]);
     }
   if (kept.count() < g.count())
@@ -190,11 +191,12 @@ IkSolution<S> selfMotionAnswer(const SerialRobot<S>& robot, const SE3<S>& pose, 
                       (asked == IkMethod::Auto ? std::string() : "; method " + std::string(ikMethodName(asked)) + " not used"));
   int outside = 0;
   for (std::size_t k = 0; k < m.representatives.size(); ++k) {
-    if (!robot.withinLimits(m.representatives[k])) {
+    const auto inside = shiftIntoLimits(robot, m.representatives[k]);
+    if (!inside) {
       ++outside;
       continue;
     }
-    sol.postures.push_back(m.representatives[k]);
+    sol.postures.push_back(*inside);
     sol.residuals.push_back(m.residuals[k]);
   }
   sol.continuum = m.converged > 0;
