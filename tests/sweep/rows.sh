@@ -2,7 +2,9 @@
 # CTest driver of `soma sweep` (issue 26): the rows of one process, of TBB threads and of
 # `mpirun -np 2` compared row for row; a sweep killed with SIGKILL and resumed gives the same rows.
 # Rows are compared without their last field, the wall seconds.
-# Usage: rows.sh parallel|resume SOMA REPO WORK [MPIEXEC]
+# mpiresume: the same kill and resume under `mpirun -np 2` (the whole job killed, its process group),
+# the rows identical to the single-process run.
+# Usage: rows.sh parallel|resume SOMA REPO WORK [MPIEXEC]; rows.sh mpiresume SOMA REPO WORK MPIEXEC
 set -euo pipefail
 mode=$1 soma=$2 repo=$3 work=$4 mpiexec=${5:-}
 rm -rf "$work" && mkdir -p "$work"
@@ -78,5 +80,38 @@ resume)
     { echo "FAIL: another sweep into the same --out: exit $rc"; cat "$work/other.txt"; exit 1; }
   same "$work/reference" "$work/resumed"
   echo "PASS: killed at $written rows, resumed, $total rows identical to the uninterrupted run"
+  ;;
+mpiresume)
+  [ -n "$mpiexec" ] || { echo "FAIL: mpiresume needs MPIEXEC"; exit 1; }
+  sweep=$repo/tests/sweep/ur5_resume.json
+  total=400
+  mpi=("$mpiexec" --allow-run-as-root --oversubscribe -np 2 "$soma" sweep "$sweep" --threads 1 --quiet)
+  "$soma" sweep "$sweep" --out "$work/reference" --threads 1 --quiet
+  "${mpi[@]}" --out "$work/resumed" > "$work/killed.txt" 2>&1 & pid=$!
+  # Rank 0 writes each chunk as it arrives (guided chunks: the first are 50 points): kill at the first.
+  for _ in $(seq 1 3000); do
+    [ "$(lines "$work/resumed/rows.jsonl")" -ge 1 ] && break
+    sleep 0.005
+  done
+  # Open MPI puts the ranks in process groups of their own: SIGKILL to mpirun and every descendant.
+  tree() { local c; for c in $(pgrep -P "$1"); do echo "$c"; tree "$c"; done; }
+  victims=$(echo $pid; tree $pid)
+  kill -KILL $victims 2>/dev/null || true
+  wait $pid 2>/dev/null || true
+  for _ in $(seq 1 500); do
+    alive=0; for v in $victims; do kill -0 "$v" 2>/dev/null && alive=1; done
+    [ $alive = 0 ] && break; sleep 0.01
+  done
+  written=$(lines "$work/resumed/rows.jsonl")
+  echo "mpirun -np 2 killed after $written of $total rows"
+  [ "$written" -gt 0 ] && [ "$written" -lt $total ] || { echo "FAIL: the kill did not land mid-run ($written rows)"; exit 1; }
+  "${mpi[@]}" --out "$work/resumed" > "$work/rerun.txt"
+  cat "$work/rerun.txt"
+  grep -q "on 2 ranks" "$work/rerun.txt" || { echo "FAIL: the resumed run did not run on 2 ranks"; exit 1; }
+  [ $alive = 0 ] || { echo "FAIL: a rank outlived SIGKILL"; exit 1; }
+  grep -q "$total points: $written already written, $((total - written)) computed" "$work/rerun.txt" ||
+    { echo "FAIL: the resumed run did not skip exactly the $written complete rows"; exit 1; }
+  same "$work/reference" "$work/resumed"
+  echo "PASS: mpirun -np 2 killed at $written rows, resumed on 2 ranks, $total rows identical to the single-process run"
   ;;
 esac
