@@ -67,6 +67,7 @@
 #include <soma/geometry/numeric_polish.hpp>
 #include <soma/geometry/parallel/solve_stewart.hpp>
 #include <soma/geometry/parallel/stewart.hpp>
+#include <soma/geometry/parallel/stewart_class.hpp>
 #include <soma/geometry/parallel/stewart_numeric.hpp>
 #include <soma/geometry/pga/angle.hpp>
 #include <soma/geometry/pga/basis.hpp>
