@@ -11,6 +11,7 @@
 #include <cctype>
 #include <charconv>
 #include <cstdlib>
+#include <fstream>
 #include <limits>
 #include <map>
 #include <set>
@@ -439,6 +440,53 @@ std::optional<std::size_t> sweepJsonLinePoint(const std::string& line) {
       !j.contains("seconds"))
     return std::nullopt;
   return j["point"].get<std::size_t>();
+}
+
+std::vector<SweepRow> readSweepRows(const SweepFile& sweep, const std::filesystem::path& jsonl) {
+  std::ifstream in(jsonl, std::ios::binary);
+  if (!in) throw InvalidInput(jsonl.string() + ": cannot be read (a sweep's rows: --out DIR/" + sweep.jsonl + ")");
+  std::vector<SweepRow> rows;
+  std::string line;
+  for (std::size_t n = 1; std::getline(in, line); ++n) {
+    const std::string where = jsonl.string() + ": line " + std::to_string(n);
+    const bool complete = !in.eof();  // getline stopped at a newline: the line was written whole
+    const json j = json::parse(line, nullptr, false);
+    if (!complete || j.is_discarded() || !j.is_object())
+      throw InvalidInput(where + ": not a complete row (a JSON object on one line)");
+    const auto member = [&](const char* key) -> const json& {
+      if (!j.contains(key)) throw InvalidInput(where + ": no \"" + std::string(key) + "\"");
+      return j.at(key);
+    };
+    SweepRow r;
+    const json& point = member("point");
+    if (!point.is_number_unsigned() || point.get<std::size_t>() >= sweep.points())
+      throw InvalidInput(where + ": \"point\" is not a point of " + sweep.origin + " (0 .. " +
+                         std::to_string(sweep.points()) + " - 1)");
+    r.point = point.get<std::size_t>();
+    const json& p = member("parameters");
+    for (const SweepParameter& sp : sweep.parameters) {
+      if (!p.is_object() || !p.contains(sp.name) || !p.at(sp.name).is_number())
+        throw InvalidInput(where + ": parameters." + sp.name + " is missing or not a number");
+      r.parameters.push_back(p.at(sp.name).get<double>());
+    }
+    if (!member("status").is_string()) throw InvalidInput(where + ": \"status\" is not a string");
+    r.status = j.at("status").get<std::string>();
+    const json& v = member("values");
+    if (!v.is_object()) throw InvalidInput(where + ": \"values\" is not an object");
+    if (!v.empty())
+      for (const SweepQuantity& q : sweep.quantities) {
+        if (!v.contains(q.name)) throw InvalidInput(where + ": values." + q.name + " is missing");
+        r.values.push_back(v.at(q.name).dump());
+      }
+    // A non-finite residual is written as null (JSON has no NaN).
+    if (!(member("residual").is_number() || j.at("residual").is_null()) || !member("seconds").is_number())
+      throw InvalidInput(where + ": \"residual\" or \"seconds\" is not a number");
+    r.residual = j.at("residual").is_null() ? std::numeric_limits<double>::quiet_NaN() : j.at("residual").get<double>();
+    r.seconds = j.at("seconds").get<double>();
+    if (j.contains("message") && j.at("message").is_string()) r.message = j.at("message").get<std::string>();
+    rows.push_back(std::move(r));
+  }
+  return rows;
 }
 
 }  // namespace soma::io

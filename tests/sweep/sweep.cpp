@@ -192,4 +192,55 @@ TEST_CASE("sweep: rows as CSV and JSON Lines; a partial line is not a row", "[sw
   CHECK(io::sweepCsvLine(s, row) == "3,0.5,2,,,,1e-15,error,\"a, \"\"quoted\"\" message\",0.25\n");
 }
 
+TEST_CASE("sweep: rows read back exactly as written; a partial, foreign or out-of-range line is refused with its line", "[sweep]") {
+  const io::SweepFile s = example("cusps_orthogonal_3r.json");
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "soma-test-sweep-rows";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::vector<io::SweepRow> rows(3);
+  // Parameters and residuals that a short decimal would not carry: they must come back bit for bit.
+  rows[0] = {.point = 0, .parameters = {0.1 + 0.2, 1.0 / 3}, .values = {"3", "true", "2"}, .residual = 2.2250738585072014e-308,
+             .status = "ok", .message = "", .seconds = 0.125};
+  rows[1] = {.point = 1, .parameters = {std::nextafter(2.0, 3.0), 2}, .values = {}, .residual = std::nan(""),
+             .status = "error", .message = "a \"quoted\" message", .seconds = 1e-6};
+  rows[2] = {.point = 41, .parameters = {4, 3}, .values = {"1", "false", "0"}, .residual = 0, .status = "ok", .message = "",
+             .seconds = 7};
+  const auto write = [&](const std::string& text) {
+    std::ofstream(dir / "rows.jsonl", std::ios::binary) << text;
+    return dir / "rows.jsonl";
+  };
+  std::string text;
+  for (const auto& r : rows) text += io::sweepJsonLine(s, r);
+  const std::vector<io::SweepRow> back = io::readSweepRows(s, write(text));
+  REQUIRE(back.size() == 3);
+  for (std::size_t i = 0; i < 3; ++i) {
+    CHECK(back[i].point == rows[i].point);
+    CHECK(back[i].parameters == rows[i].parameters);
+    CHECK(back[i].values == rows[i].values);
+    CHECK(back[i].status == rows[i].status);
+    CHECK(back[i].message == rows[i].message);
+    CHECK(back[i].seconds == rows[i].seconds);
+  }
+  CHECK(back[0].residual == rows[0].residual);
+  CHECK(std::isnan(back[1].residual));  // written as null
+  // A partial last line (a killed sweep), a point beyond the sweep's 42, another sweep's columns.
+  const auto refused = [&](const std::string& t) {
+    try {
+      io::readSweepRows(s, write(t));
+    } catch (const InvalidInput& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  CHECK_THAT(refused(text.substr(0, text.size() - 1)), Catch::Contains("line 3: not a complete row"));
+  rows[2].point = 42;
+  CHECK_THAT(refused(io::sweepJsonLine(s, rows[2])), Catch::Contains("line 1: \"point\" is not a point of"));
+  CHECK_THAT(refused(R"({"point":0,"parameters":{"d3":1},"values":{},"residual":0,"status":"ok","seconds":0})" "\n"),
+             Catch::Contains("line 1: parameters.a2 is missing"));
+  CHECK_THAT(refused(io::sweepJsonLine(s, rows[0]) + "not json\n"), Catch::Contains("line 2: not a complete row"));
+  CHECK(io::readSweepRows(s, write("")).empty());
+  CHECK_THROWS_WITH(io::readSweepRows(s, dir / "missing.jsonl"), Catch::Contains("missing.jsonl: cannot be read"));
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace SOMA_UNITY_ID

@@ -145,10 +145,57 @@ DetJSeries detJSeries(const SerialRobot<double>& robot) {
   return s;
 }
 
+namespace {
+
+/// The lines θ3 = c along which det J vanishes identically (orthogonal arms with r3 = 0 and a3 > a2
+/// have two, θ3 = ±c): the roots of θ3 ↦ det J(θ2*, θ3) at a θ2* of no special value where every
+/// θ2-coefficient of det J vanishes too.
+std::vector<double> vanishingLines(const DetJSeries& dj) {
+  std::vector<double> lines;
+  for (double c : dj.rootsInTheta3(0.7390851332151607))  // the fixed point of cos: no special angle
+    if (dj.vanishesAlongTheta2(c) && (lines.empty() || std::abs(wrapPi(c - lines.back())) > Tolerance<double>::sqrtEpsilon()))
+      lines.push_back(c);
+  return lines;
+}
+
+/// det J = (cos(θ3 − m) − cos δ) · R(θ2, θ3) for two lines θ3 = m ± δ of det J ≡ 0: R's series,
+/// exactly (R has degree 1 in θ3). In φ = θ3 − m a row a0 + a1 cos φ + b1 sin φ + a2 cos 2φ +
+/// b2 sin 2φ equals (cos φ − cos δ)(p0 + p1 cos φ + q1 sin φ) with p1 = 2 a2, q1 = 2 b2,
+/// p0 = a1 + cos δ · p1 (the constant and sin φ terms then agree: det J vanishes on both lines).
+DetJSeries divideByLines(const DetJSeries& dj, double c1, double c2) {
+  const double m = (c1 + c2) / 2, cd = std::cos((c1 - c2) / 2);
+  const double cm = std::cos(m), sm = std::sin(m), c2m = std::cos(2 * m), s2m = std::sin(2 * m);
+  DetJSeries r;
+  for (int j = 0; j < 5; ++j) {
+    // The row in φ: a frequency-k pair (cos kθ3, sin kθ3) turns by k·m.
+    const double a1 = dj.C(j, 1) * cm + dj.C(j, 2) * sm, a2 = dj.C(j, 3) * c2m + dj.C(j, 4) * s2m;
+    const double b2 = -dj.C(j, 3) * s2m + dj.C(j, 4) * c2m;
+    const double p1 = 2 * a2, q1 = 2 * b2, p0 = a1 + cd * p1;
+    // Back to θ3: p1 cos φ + q1 sin φ = (p1 cos m − q1 sin m) cos θ3 + (p1 sin m + q1 cos m) sin θ3.
+    r.C(j, 0) = p0;
+    r.C(j, 1) = p1 * cm - q1 * sm;
+    r.C(j, 2) = p1 * sm + q1 * cm;
+  }
+  r.scale = 0;
+  for (int a = 0; a < 12; ++a)
+    for (int b = 0; b < 12; ++b) r.scale = std::max(r.scale, std::abs(r.value(2 * kPi * a / 12, 2 * kPi * b / 12)));
+  return r;
+}
+
+}  // namespace
+
 std::vector<SingularBranch> traceSingularCurves(const SerialRobot<double>& robot, const DetJSeries& dj,
                                                 double step, int seedLines) {
   if (!(step > 0) || seedLines < 1) throw InvalidInput("traceSingularCurves: step > 0 and seedLines ≥ 1 required");
   const Arm3RFrame<double> frame = arm3RFrame(robot);
+  // Two lines θ3 = c of det J ≡ 0 cross the other branches at nodes, where a continuation can turn
+  // onto the line and follow it for its whole step budget (measured on orthogonal arms with r3 = 0:
+  // (1, 0.4, 0.45, 1, 0) with a corrector across the tangent, (1, 1.2, 1.85, 1, 0) with one along
+  // ∇det J; thousands of false image reversals). So the other branches are traced on the quotient
+  // R = det J / (cos(θ3 − m) − cos δ), which has no such node, and the lines are added as branches.
+  const std::vector<double> lines = vanishingLines(dj);
+  const DetJSeries reduced = lines.size() == 2 ? divideByLines(dj, lines[0], lines[1]) : dj;
+  const DetJSeries& f = reduced;
   // Occupancy of the torus by traced points (cells of about 2 steps).
   const int M = std::max(16, int(2 * kPi / (2 * step)));
   std::vector<char> occ(std::size_t(M) * M, 0);
@@ -162,20 +209,33 @@ std::vector<SingularBranch> traceSingularCurves(const SerialRobot<double>& robot
       for (int dk = -1; dk <= 1; ++dk) occ[std::size_t((j + dk + M) % M) * M + (i + di + M) % M] = 1;
   };
   auto occupied = [&](const Eigen::Vector2d& x) { return occ[std::size_t(cell(x(1))) * M + cell(x(0))] != 0; };
-  const double tolD = Tolerance<double>::identity() * dj.scale;
+  const double tolD = Tolerance<double>::identity() * f.scale;
   auto correct = [&](Eigen::Vector2d& y) {
     for (int it = 0; it < 12; ++it) {
-      const double d = dj.value(y(0), y(1));
+      const double d = f.value(y(0), y(1));
       if (std::abs(d) <= tolD) return true;
-      const Eigen::Vector2d g = dj.gradient(y(0), y(1));
+      const Eigen::Vector2d g = f.gradient(y(0), y(1));
       const double g2 = g.squaredNorm();
       if (!(g2 > 0)) return false;
       y -= (d / g2) * g;
     }
-    return std::abs(dj.value(y(0), y(1))) <= Tolerance<double>::sqrtEpsilon() * dj.scale;
+    return std::abs(f.value(y(0), y(1))) <= Tolerance<double>::sqrtEpsilon() * f.scale;
+  };
+  // The corrector of a step: Newton along n, the normal of the branch's current tangent (pseudo-
+  // arclength continuation): across n the branch is O(h²) away from the predictor, a curve crossing
+  // it at a node O(h), where a corrector along ∇f can land on the other curve.
+  auto correctAcross = [&](Eigen::Vector2d& y, const Eigen::Vector2d& n) {
+    for (int it = 0; it < 12; ++it) {
+      const double d = f.value(y(0), y(1));
+      if (std::abs(d) <= tolD) return true;
+      const double gn = f.gradient(y(0), y(1)).dot(n);
+      if (!(std::abs(gn) > 0)) return false;
+      y -= (d / gn) * n;
+    }
+    return std::abs(f.value(y(0), y(1))) <= Tolerance<double>::sqrtEpsilon() * f.scale;
   };
   auto tangent = [&](const Eigen::Vector2d& y) {
-    const Eigen::Vector2d g = dj.gradient(y(0), y(1));
+    const Eigen::Vector2d g = f.gradient(y(0), y(1));
     Eigen::Vector2d t(-g(1), g(0));
     const double n = t.norm();
     return n > 0 ? Eigen::Vector2d(t / n) : Eigen::Vector2d(0, 0);
@@ -186,11 +246,22 @@ std::vector<SingularBranch> traceSingularCurves(const SerialRobot<double>& robot
   std::vector<Eigen::Vector2d> seeds;
   for (int l = 0; l < seedLines; ++l) {
     const double c = -kPi + 2 * kPi * (l + 0.5) / seedLines;
-    if (!dj.vanishesAlongTheta2(c))
-      for (double r : dj.rootsInTheta2(c)) seeds.emplace_back(r, c);
-    for (double r : dj.rootsInTheta3(c)) seeds.emplace_back(c, r);
+    if (!f.vanishesAlongTheta2(c))
+      for (double r : f.rootsInTheta2(c)) seeds.emplace_back(r, c);
+    for (double r : f.rootsInTheta3(c)) seeds.emplace_back(c, r);
   }
   std::vector<SingularBranch> out;
+  // |∇det J| and the section's (ρ, z) at each point of a traced branch, then the branch kept.
+  auto finish = [&](SingularBranch& br) {
+    br.section.reserve(br.joints.size());
+    for (const auto& p : br.joints) br.gradient.push_back(dj.gradient(p(0), p(1)).norm());
+    for (const auto& p : br.joints) {
+      JointVector<double> q(3);
+      q << 0, p(0), p(1);
+      br.section.push_back(workspaceSection(frame, robot, q));
+    }
+    out.push_back(std::move(br));
+  };
   const int maxSteps = int(40 * kPi / step);
   for (const auto& s0 : seeds) {
     if (occupied(s0)) continue;
@@ -207,7 +278,7 @@ std::vector<SingularBranch> traceSingularCurves(const SerialRobot<double>& robot
       bool ok = false;
       for (int tries = 0; tries < 7 && !ok; ++tries, h /= 2) {
         y = x + h * t;
-        ok = correct(y) && (y - x).norm() < 3 * h;
+        ok = correctAcross(y, Eigen::Vector2d(-t(1), t(0))) && (y - x).norm() < 3 * h;
       }
       if (!ok) break;
       Eigen::Vector2d tn = tangent(y);
@@ -226,15 +297,18 @@ std::vector<SingularBranch> traceSingularCurves(const SerialRobot<double>& robot
       }
     }
     for (const auto& p : br.joints) mark(p);
-    br.section.reserve(br.joints.size());
-    for (const auto& p : br.joints) br.gradient.push_back(dj.gradient(p(0), p(1)).norm());
-    for (const auto& p : br.joints) {
-      JointVector<double> q(3);
-      q << 0, p(0), p(1);
-      br.section.push_back(workspaceSection(frame, robot, q));
-    }
-    out.push_back(std::move(br));
+    finish(br);
   }
+  // The lines themselves (traced on the quotient above, they are not among its branches): θ2 once
+  // round at the tracing step; each maps to one point of the section.
+  if (lines.size() == 2)
+    for (double c : lines) {
+      SingularBranch br;
+      const int n = std::max(8, int(std::ceil(2 * kPi / step)));
+      for (int k = 0; k < n; ++k) br.joints.emplace_back(-kPi + 2 * kPi * k / n, c);
+      br.closed = true;
+      finish(br);
+    }
   return out;
 }
 

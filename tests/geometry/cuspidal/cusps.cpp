@@ -81,6 +81,39 @@ TEST_CASE("cusps: the second method (traced image reversals) agrees on literatur
   }
 }
 
+TEST_CASE("cusps: tracing crosses a line of det J ≡ 0 (orthogonal arms with r3 = 0, a3 > a2) instead of following it",
+          "[cuspidal]") {
+  // With r3 = 0 and a3 > a2, det J vanishes along two lines θ3 = ±c; the traced branches cross
+  // them. A step past a crossing was corrected onto the line, and the branch ran along it for its
+  // whole step budget (31,416 steps, ~5,300 false reversals): at (1, 1.2, 1.85) and (1, 1.6, 1.65)
+  // with a corrector along ∇det J, at (1, 0.4, 0.45) with one across the tangent; (1, 1.2, 1.65)
+  // was traced right by both. The branches are now traced on det J divided by the lines' factor.
+  struct Case {
+    double d3, d4;
+  };
+  for (const Case cs : {Case{1.2, 1.85}, Case{1.6, 1.65}, Case{0.4, 0.45}, Case{1.2, 1.65}}) {
+    INFO("(1, " << cs.d3 << ", " << cs.d4 << ", 1, 0)");
+    const auto robot = orthogonal<double>(1, cs.d3, cs.d4, 1, 0);
+    const CuspAnalysis<double> c = findCusps(robot);
+    const DetJSeries dj = detJSeries(robot);
+    const auto branches = traceSingularCurves(robot, dj);
+    int lines = 0;
+    for (const auto& b : branches) {
+      CHECK(b.closed);
+      // Every branch closes within one turn of the torus: at most 2π of θ2 and of θ3 (plus a step).
+      double t2 = 0, t3 = 0;
+      for (std::size_t i = 1; i < b.joints.size(); ++i) {
+        t2 += std::abs(b.joints[i](0) - b.joints[i - 1](0));
+        t3 += std::abs(b.joints[i](1) - b.joints[i - 1](1));
+      }
+      CHECK(std::min(t2, t3) <= 2 * M_PI + 0.01);
+      lines += dj.vanishesAlongTheta2(b.joints.front()(1));
+    }
+    CHECK(lines == 2);  // the two lines θ3 = ±c are traced as branches of their own
+    CHECK(imageReversals(branches).size() == c.cusps.size());
+  }
+}
+
 TEST_CASE("cusps: random 3R arms, algebraic count = traced count", "[cuspidal]") {
   auto& g = test::rng(905);
   int cuspidal = 0, plain = 0;

@@ -101,5 +101,10 @@ std::string sweepJsonLine(const SweepFile& sweep, const SweepRow& row);
 /// The point of a complete JSON line written by sweepJsonLine; nullopt for anything else (a
 /// partial line left by a kill).
 std::optional<std::size_t> sweepJsonLinePoint(const std::string& line);
+/// The rows of a sweep's JSON Lines file (as runSweep wrote them), in the file's order: parameters
+/// in the sweep's order, each quantity as its JSON text. InvalidInput naming the file and line when a
+/// line is not a complete row of `sweep` (a partial last line, another sweep's columns, a point
+/// beyond the sweep's points).
+std::vector<SweepRow> readSweepRows(const SweepFile& sweep, const std::filesystem::path& jsonl);
 
 }  // namespace soma::io
