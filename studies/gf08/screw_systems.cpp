@@ -357,6 +357,54 @@ void generalities3(Context& c) {
   const MX iia = normalForm({T::IIAp_3, {0.7}});
   M6 qp = kleinForm<double>() + 0.7 * infinityForm<double>();
   c.checkResidual("IIA(p = 0.7) lies in the pitch quadric Q_{0.7}: Sᵀ(Q₀ + 0.7 Q∞)S = 0", maxAbs(gram(iia, qp)), kTol);
+  // GF §8.3.6 (catalogue ch. 8, minor row 4803): "the condition for three lines to be mutually
+  // orthogonal and concurrent is s₁ᵀQ₀[s₂, s₃] = 0" is necessary, not sufficient. Lines through one
+  // point r with arbitrary directions satisfy it ([s₂, s₃] is a line through r, which meets s₁);
+  // the book's next sentence, sᵢᵀQ_p sⱼ = 0 for all p (meet: Q₀; perpendicular: Q∞), is the condition.
+  {
+    auto line = [](const Vec3d& w, const Vec3d& r) {
+      V6 s;
+      s << w.normalized(), r.cross(w.normalized());
+      return s;
+    };
+    auto bracket = [](const V6& a, const V6& b) {
+      V6 s;
+      s << Vec3d(a.head<3>()).cross(Vec3d(b.head<3>())),
+          Vec3d(a.head<3>()).cross(Vec3d(b.tail<3>())) + Vec3d(a.tail<3>()).cross(Vec3d(b.head<3>()));
+      return s;
+    };
+    const M6 Q0 = kleinForm<double>(), Qi = infinityForm<double>();
+    auto h = rng(4803);
+    std::uniform_real_distribution<double> u(-1, 1);
+    auto rv = [&] { return Vec3d(u(h), u(h), u(h)); };
+    double printedCond = 0, orthDefect = 1e300, corrOrth = 0, corrFails = 1e300;
+    for (int k = 0; k < 20; ++k) {
+      const Vec3d r = rv(), w1 = rv(), w2 = rv(), w3 = rv();
+      const V6 s1 = line(w1, r), s2 = line(w2, r), s3 = line(w3, r);
+      printedCond = std::max(printedCond, abs(double(s1.transpose() * Q0 * bracket(s2, s3))));
+      const double orth = std::max({abs(s1.head<3>().dot(s2.head<3>())), abs(s1.head<3>().dot(s3.head<3>())),
+                                    abs(s2.head<3>().dot(s3.head<3>()))});
+      orthDefect = std::min(orthDefect, orth);
+      // the corrected condition: every pair meets (Q₀) and is perpendicular (Q∞)
+      double pairs = 0;
+      for (const auto& [a, b] : {std::pair{s1, s2}, std::pair{s1, s3}, std::pair{s2, s3}})
+        pairs = std::max({pairs, abs(double(a.transpose() * Q0 * b)), abs(double(a.transpose() * Qi * b))});
+      corrFails = std::min(corrFails, pairs);
+      // an orthogonal concurrent triple (a rotated frame at r) satisfies both
+      const Mat3<double> F = Eigen::Quaterniond(u(h), u(h), u(h), u(h)).normalized().toRotationMatrix();
+      const V6 o1 = line(F.col(0), r), o2 = line(F.col(1), r), o3 = line(F.col(2), r);
+      for (const auto& [a, b] : {std::pair{o1, o2}, std::pair{o1, o3}, std::pair{o2, o3}})
+        corrOrth = std::max({corrOrth, abs(double(a.transpose() * Q0 * b)), abs(double(a.transpose() * Qi * b))});
+      corrOrth = std::max(corrOrth, abs(double(o1.transpose() * Q0 * bracket(o2, o3))));
+    }
+    c.checkResidual("20 concurrent triples with random directions satisfy s₁ᵀQ₀[s₂, s₃] = 0", printedCond, kTol);
+    c.checkPrintedFails("… yet are not mutually orthogonal (smallest largest |ωᵢ·ωⱼ|): the printed condition is not sufficient",
+                        "ch. 8 minor 4803", orthDefect, 1e-3);
+    c.checkResidual("orthogonal concurrent triples satisfy sᵢᵀQ₀sⱼ = sᵢᵀQ∞sⱼ = 0 (the corrected condition) and the printed one",
+                    corrOrth, kTol);
+    c.recordIn("… and the random concurrent triples violate the corrected condition (smallest largest |sᵢᵀQsⱼ|)", "> 1e-3",
+               io::numberText(corrFails), corrFails, 1e-3, corrFails > 1e-3);
+  }
 }
 
 template <class W> void normalForms3(Context& c) {

@@ -108,6 +108,89 @@ void pieperAlgorithm(Context& c) {
     }
 }
 
+// GF §10.3.2: the book's intermediate formulas of the T³ solution, printed and corrected, evaluated
+// at the postures of a pose (E10.4, E10.5, E10.6, E10.8). k = T M⁻¹ = (R, t) (rotation φ about v);
+// the plane a₁πa₁* has normal n = (cos θ₁, sin θ₁, 0) through 0, and k*(·)k moves it by k⁻¹.
+void t3PrintedForms(Context& c, const SerialRobot<S>& robot, const SE3<S>& T, const Solution<S>& sol, double l1,
+                    double l2, double l3) {
+  const SE3<S> k = T * robot.home().inverse();
+  const Mat3<S> R = k.rotation().matrix();
+  const Vec3<S> t = k.translation(), tp = -R.transpose() * t;  // t′ = −Rᵀt: the translation of k⁻¹
+  const double L = l1 + l2 + l3;
+  const Eigen::AngleAxisd aa(R);
+  const Vec3<S> v = aa.axis();
+  const double phi = aa.angle();
+  double printedD = 1e300, corrD = 0, worstAlpha = 0, printedAlpha = 1e300, typoAlpha = 1e300;
+  // α, β as printed after the OCR repairs (t_z − l₁ − l₂ − l₃; α's last term v_x(v·w)), in terms of a
+  // translation u: α = (R w)_x, β = (R w)_y with w = u − L e₃ (the book's expansion of R).
+  auto alphaBeta = [&](const Vec3<S>& u) {
+    const Vec3<S> w(u.x(), u.y(), u.z() - L);
+    const Vec3<S> Rw = std::cos(phi) * w + std::sin(phi) * v.cross(w) + (1 - std::cos(phi)) * v * v.dot(w);
+    return Vec2<S>(Rw.x(), Rw.y());
+  };
+  for (const auto& p : sol.postures) {
+    const Vec3<S> n(std::cos(p(0)), std::sin(p(0)), 0), N = R.transpose() * n;
+    // D − L N_z = 0 at every posture: with D = N·(−Rᵀt) (corrected), not N·t (printed).
+    corrD = std::max(corrD, std::abs(N.dot(tp) - L * N.z()));
+    printedD = std::min(printedD, std::abs(N.dot(t) - L * N.z()));
+    // α cos θ₁ + β sin θ₁ = 0 (γ = 0): corrected with t′; the typo-repaired α, β with t fail (E10.4).
+    const Vec2<S> ab = alphaBeta(tp), abPrinted = alphaBeta(t);
+    worstAlpha = std::max(worstAlpha, std::abs(ab.x() * n.x() + ab.y() * n.y()));
+    printedAlpha = std::min(printedAlpha, std::abs(abPrinted.x() * n.x() + abPrinted.y() * n.y()));
+    // α with its printed typo "t_y − l₁ − l₂ − l₂" in the first line (and t′): E10.5.
+    const Vec3<S> w(tp.x(), tp.y(), tp.z() - L);
+    const double alphaTypo = ((1 - v.x() * v.x()) * w.x() - v.x() * v.y() * w.y() - v.x() * v.z() * (tp.y() - l1 - 2 * l2)) * std::cos(phi) +
+                             (v.y() * w.z() - v.z() * w.y()) * std::sin(phi) + v.x() * v.dot(w);
+    typoAlpha = std::min(typoAlpha, std::abs(alphaTypo * n.x() + ab.y() * n.y()));
+  }
+  c.checkResidual("D − (l1+l2+l3)N_z = 0 at every posture with D = N·(−Rᵀt) (corrected, E10.4)", corrD, 1e-14);
+  c.checkPrintedFails("D = N_x t_x + N_y t_y + N_z t_z: D − (l1+l2+l3)N_z at the postures (smallest)", "E10.4", printedD, 1e-6);
+  c.checkResidual("α cos θ1 + β sin θ1 = 0 (γ = 0) with α, β in t′ = −Rᵀt (E10.4, E10.5 repaired)", worstAlpha, 1e-14);
+  c.checkPrintedFails("… the same α, β in t as printed (smallest over the postures)", "E10.4", printedAlpha, 1e-6);
+  c.checkPrintedFails("… α with the printed \"t_y − l1 − l2 − l2\" (smallest)", "E10.5", typoAlpha, 1e-6);
+  // The rotor printed r = cos φ/2 + v_x sin φ/2 e₂e₃ + v_y sin φ/2 e₃e₁ + v_x sin φ/2 e₁e₂ is not a unit
+  // rotor unless v_x = ±v_z: |r r̃ − 1| = sin²(φ/2)|v_x² − v_z²| (E10.5: the last v_x is v_z).
+  {
+    const double s = std::sin(phi / 2);
+    const double printedNorm = std::abs(std::cos(phi / 2) * std::cos(phi / 2) + s * s * (2 * v.x() * v.x() + v.y() * v.y()) - 1);
+    const double corrNorm = std::abs(std::cos(phi / 2) * std::cos(phi / 2) + s * s * v.squaredNorm() - 1);
+    c.checkResidual("rotor cos φ/2 + sin φ/2 (v_x e₂e₃ + v_y e₃e₁ + v_z e₁e₂) is a unit rotor (E10.5 corrected)", corrNorm, 1e-15);
+    c.checkPrintedFails("… with v_x in place of v_z as printed: |r r̃ − 1|", "E10.5", printedNorm, 1e-6);
+  }
+  // E10.6 and E10.8: the position of axis 4 after a₂a₃ (LHS) and after k′ = a₂a₃a₄ (RHS), in the
+  // yz-plane: X e₂𝐞 + Y e₃𝐞 with X = z, Y = −y of the moved axis point (0, 0, l₁ + l₂).
+  double lhsCorr = 0, lhsPrinted = 1e300, rhsCorr = 0, rhsPrinted = 1e300, theta2Corr = 0;
+  for (const auto& p : sol.postures) {
+    const Vec3<S> r4 = robot.joints()[1].motion(p(1)).act(robot.joints()[2].motion(p(2)).act(robot.joints()[3].point));
+    const double c2 = std::cos(p(1)), s2 = std::sin(p(1)), c3 = std::cos(p(2)), s3 = std::sin(p(2));
+    auto lhs = [&](double lk) {
+      return Vec2<S>(c2 * (l1 + l2 * c3) - lk * s2 * s3, s2 * (l1 + l2 * c3) + lk * c2 * s3);
+    };
+    const Vec2<S> truth(r4.z(), -r4.y());
+    lhsCorr = std::max(lhsCorr, (lhs(l2) - truth).norm());
+    lhsPrinted = std::min(lhsPrinted, (lhs(l1) - truth).norm());
+    const SE3<S> kp = robot.joints()[1].motion(p(1)) * robot.joints()[2].motion(p(2)) * robot.joints()[3].motion(p(3));
+    const Mat3<S> Rp = kp.rotation().matrix();
+    const double phip = std::atan2(Rp(2, 1), Rp(1, 1));  // rotation about x
+    const Vec3<S> tt = kp.translation();
+    const Vec2<S> xyCorr((l1 + l2) * std::cos(phip) + tt.z(), (l1 + l2) * std::sin(phip) - tt.y());
+    const Vec2<S> xyPrinted((l2 + l3) * std::cos(phip) + tt.z(), (l2 + l3) * std::sin(phip) - tt.z());
+    rhsCorr = std::max(rhsCorr, (xyCorr - truth).norm());
+    rhsPrinted = std::min(rhsPrinted, (xyPrinted - truth).norm());
+    // θ₂ from the corrected X, Y (the book's formula printed next to them)
+    const double s2sq = l1 * l1 + l2 * l2 + 2 * l1 * l2 * c3;
+    const double cc = (xyCorr.x() * (l1 + l2 * c3) + xyCorr.y() * l2 * s3) / s2sq,
+                 ss = (xyCorr.y() * (l1 + l2 * c3) - xyCorr.x() * l2 * s3) / s2sq;
+    theta2Corr = std::max(theta2Corr, std::hypot(cc - c2, ss - s2));
+  }
+  c.checkResidual("a₂a₃ℓ₄a₃*a₂* = e₂e₃ + (cos θ2(l1 + l2 cos θ3) − l2 sin θ2 sin θ3)e₂𝐞 + (… + l2 cos θ2 sin θ3)e₃𝐞 "
+                  "(E10.6 corrected)", lhsCorr, 1e-14);
+  c.checkPrintedFails("… with l1 in both sin θ3 terms as printed (smallest)", "E10.6", lhsPrinted, 1e-6);
+  c.checkResidual("X = (l1+l2) cos φ′ + t′_z, Y = (l1+l2) sin φ′ − t′_y (E10.8 corrected)", rhsCorr, 1e-14);
+  c.checkPrintedFails("… X = (l2+l3) cos φ′ + t′_z, Y = (l2+l3) sin φ′ − t′_z as printed (smallest)", "E10.8", rhsPrinted, 1e-6);
+  c.checkResidual("θ2 from the corrected X, Y by the book's cos θ2, sin θ2 formulas (every posture)", theta2Corr, 1e-14);
+}
+
 // GF §10.3.2, GF-10.3.2-T3-robot (E10.4–E10.8 corrected forms)
 void t3Example(Context& c) {
   const double l1 = 0.9, l2 = 0.7, l3 = 0.25;
@@ -142,6 +225,7 @@ void t3Example(Context& c) {
   c.record("cos θ3 = (s² − l1² − l1²)/2l1l2 [as printed]", "fails (erratum E10.7)",
            fmt::format("{:.6f} vs cos θ3 = {:.6f}", printed, std::cos(q(2))), std::abs(printed - std::cos(q(2))), 1e-12,
            std::abs(printed - std::cos(q(2))) > 1e-6);
+  t3PrintedForms(c, robot, T, sol, l1, l2, l3);
 }
 
 // GF §10.3.3, GF-10.3.3-PUMA (E10.9: a4a5a6 = a3*a2*a1* k)
@@ -231,7 +315,7 @@ SOMA_STUDY({.id = "GF-10.3-pieper-theorem", .title = "Pieper robots have at most
             .source = "GF §10.3", .chapter = kChapter, .run = pieperTheorem});
 SOMA_STUDY({.id = "GF-10.3.1-pieper-algorithm", .title = "Pieper's decoupling for every triple position, meeting or parallel",
             .source = "GF §10.3.1", .chapter = kChapter, .run = pieperAlgorithm});
-SOMA_STUDY({.id = "GF-10.3.2-T3-robot", .title = "The T³ robot: closed-form IK, planar sum and cosine rule (E10.7)",
+SOMA_STUDY({.id = "GF-10.3.2-T3-robot", .title = "The T³ robot: closed-form IK, planar sum, cosine rule and the printed intermediate forms (E10.4–E10.8)",
             .source = "GF §10.3.2", .chapter = kChapter, .run = t3Example});
 SOMA_STUDY({.id = "GF-10.3.3-PUMA", .title = "The PUMA 560: 8 postures, the wrist split a4a5a6 = a3*a2*a1*k (E10.9)",
             .source = "GF §10.3.3", .chapter = kChapter, .run = pumaExample});

@@ -1,0 +1,169 @@
+// GF Fig. 11.1, "A General Stewart Platform" (§11.5.4): base and platform joined by six hydraulic
+// legs with ball joints at both ends, the joint centres not coplanar. Drawn for the general
+// platform of studies/platforms/general.json in one of its real assembly modes; what the figure
+// shows is checked against independent values: the joint centres are off a plane, every drawn leg
+// has its file length, and the real assembly modes soma finds are the real solutions PHCpack finds
+// for the same platform. Double (PHCpack's).
+#include "soma/geometry/parallel/stewart.hpp"
+#include "soma/geometry/study/constraint_quadrics.hpp"
+#include "soma/io/platform_file.hpp"
+#include "soma/render/render.hpp"
+#include "soma/studies/phc_runner.hpp"
+#include "soma/studies/study.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/SVD>
+
+#include <random>
+
+namespace soma::studies::gf11fig1::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
+namespace {
+
+using S = double;
+constexpr const char* kChapter = "GF 11 — The Study quadric";
+constexpr const char* kWhyDouble = "PHCpack, the independent solver, works in double";
+namespace rd = soma::render;
+
+/// Smallest singular value over the largest of the centred points: 0 iff they are coplanar.
+double planarity(const std::array<Vec3<S>, 6>& pts) {
+  Vec3<S> m = Vec3<S>::Zero();
+  for (const auto& p : pts) m += p / 6.0;
+  Eigen::Matrix<double, 6, 3> A;
+  for (int i = 0; i < 6; ++i) A.row(i) = (pts[std::size_t(i)] - m).transpose();
+  const Eigen::Vector3d sv = Eigen::JacobiSVD<Eigen::Matrix<double, 6, 3>>(A).singularValues();
+  return sv(2) / sv(0);
+}
+
+void drawFigure(Context& c, const StewartPlatform<S>& P, const StewartForwardSolution<S>& s, std::size_t shown,
+                const std::string& file) {
+  rd::Scene scene;
+  scene.title = "GF Fig. 11.1: a general Stewart platform";
+  std::vector<Eigen::Vector3d> base, top;
+  for (int i = 0; i < 6; ++i) {
+    base.push_back(P.base[std::size_t(i)]);
+    top.push_back(s.postures[shown].act(P.platform[std::size_t(i)]));
+  }
+  auto plate = [&](const std::vector<Eigen::Vector3d>& v, rd::Color col) {
+    rd::Mesh m;  // a fan over the joint centres (they are not coplanar: the plate is slightly bent)
+    Eigen::Vector3d ctr = Eigen::Vector3d::Zero();
+    for (const auto& x : v) ctr += x / 6.0;
+    m.v = v;
+    m.v.push_back(ctr);
+    for (int i = 0; i < 6; ++i) m.tri.push_back(Eigen::Vector3i(6, i, (i + 1) % 6));
+    m.c = col;
+    scene.add(m);
+    rd::Tube rim;
+    rim.p = v;
+    rim.closed = true;
+    rim.radius = 0.012;
+    rim.c = rd::palette::darkGrey;
+    scene.add(rim);
+  };
+  plate(base, rd::palette::lightGrey);
+  plate(top, rd::palette::orange.withAlpha(0.75f));
+  for (int i = 0; i < 6; ++i) {
+    // a hydraulic leg: the cylinder on the base joint, the thinner piston rod to the platform joint
+    const Eigen::Vector3d a = base[std::size_t(i)], b = top[std::size_t(i)];
+    rd::Tube cyl;
+    cyl.p = {a, a + 0.58 * (b - a)};
+    cyl.radius = 0.035;
+    cyl.c = rd::palette::blue;
+    scene.add(cyl);
+    rd::Tube rod;
+    rod.p = {a + 0.5 * (b - a), b};
+    rod.radius = 0.018;
+    rod.c = rd::palette::skyBlue;
+    scene.add(rod);
+    rd::Label l;
+    l.at = a;
+    l.text = fmt::format("{}", i + 1);
+    l.pixelHeight = 20;
+    l.offset = Eigen::Vector2d(8, 14);
+    l.vAlign = rd::VAlign::Top;
+    scene.add(l);
+  }
+  scene.add(rd::Points{base, rd::palette::darkGrey, 0.045});  // ball joints
+  scene.add(rd::Points{top, rd::palette::vermillion, 0.045});
+  rd::FitOptions fo;
+  fo.width = 1200;
+  fo.height = 1000;
+  rd::renderPng(scene, Eigen::Vector3d(-0.55, 1.0, -0.22), fo, c.figurePath(file));
+  c.figure(file, fmt::format("GF Fig. 11.1 redrawn: the general 6-6 platform of studies/platforms/general.json (joint "
+                             "centres off a plane) in one of its {} real assembly modes for the same six leg lengths; "
+                             "legs as cylinder and piston rod, ball joints as spheres, numbered at the base.",
+                             s.count()));
+}
+
+void figure111(Context& c) {
+  const auto P = io::readPlatform<S>(sourceRoot() / "studies/platforms/general.json");
+  // The figure's claim "not necessarily coplanar": this platform's joints are off a plane.
+  c.recordIn("base joint centres not coplanar: σ₃/σ₁ of the centred points", "> 1e-3", fmt::format("{:.3g}", planarity(P.base)),
+             planarity(P.base), 1e-3, planarity(P.base) > 1e-3);
+  c.recordIn("platform joint centres not coplanar: σ₃/σ₁", "> 1e-3", fmt::format("{:.3g}", planarity(P.platform)),
+             planarity(P.platform), 1e-3, planarity(P.platform) > 1e-3);
+  const auto s = solveStewartForward<S>(P);
+  c.checkEqual("soma's forward kinematics: complex solutions (GF §11.5.4: 40)", 40, s.complexCount());
+  // The drawn legs have the file's lengths (every real mode).
+  double worstLeg = 0;
+  for (const auto& g : s.postures)
+    for (int i = 0; i < 6; ++i)
+      worstLeg = std::max(worstLeg, std::abs((g.act(P.platform[std::size_t(i)]) - P.base[std::size_t(i)]).norm() - P.legs[std::size_t(i)]));
+  c.checkResidual("every drawn leg |R qᵢ + t − pᵢ| has its file length Lᵢ (all real modes, 64ε·L)", worstLeg,
+                  64 * Tolerance<S>::epsilon() * 2);
+  // Independent: PHCpack on the same platform (six leg quadrics, the Study quadric, a random chart),
+  // its real regular solutions off the exceptional plane a = 0.
+  std::mt19937_64 g(111);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const std::vector<std::string> x8 = {"a0", "a1", "a2", "a3", "c0", "c1", "c2", "c3"};
+  auto quadric = [&](const Mat8<S>& Q) {
+    std::string t;
+    for (int i = 0; i < 8; ++i)
+      for (int j = i; j < 8; ++j)
+        if (Q(i, j) != 0) t += fmt::format(" {}*{}*{}", phcNumber(Q(i, j) * (i == j ? 1.0 : 2.0)), x8[std::size_t(i)], x8[std::size_t(j)]);
+    return t + ";";
+  };
+  std::vector<std::string> eqs;
+  for (int i = 0; i < 6; ++i) eqs.push_back(quadric(sphereConstraintQuadric<S>(P.base[std::size_t(i)], P.platform[std::size_t(i)], P.legs[std::size_t(i)])));
+  eqs.push_back(quadric(studyQuadricMatrix<S>()));
+  std::string chart;
+  for (int i = 0; i < 8; ++i) chart += fmt::format(" {}*{}", phcNumber(u(g)), x8[std::size_t(i)]);
+  eqs.push_back(chart + " - 1;");
+  const PhcResult run = solveWithPhc(eqs, x8, "fig111");
+  std::vector<Eigen::Matrix<double, 8, 1>> phcReal;
+  int finite = 0;
+  for (const auto& sol : run.solutions) {
+    if (!sol.regular || !(sol.x.head<4>().norm() > 1e-8 * sol.x.norm())) continue;
+    ++finite;
+    Eigen::Index k = 0;
+    sol.x.cwiseAbs().maxCoeff(&k);
+    const Eigen::VectorXcd y = sol.x / sol.x(k);
+    if (y.imag().cwiseAbs().maxCoeff() <= 1e-8) phcReal.push_back(y.real());
+  }
+  c.note(fmt::format("PHCpack: {} paths, {} regular finite solutions, {} real; {:.1f} s.", run.paths, finite, phcReal.size(), run.seconds));
+  c.checkEqual("PHCpack: regular finite solutions (independent count, 40)", 40, finite);
+  c.checkEqual("real assembly modes drawn (soma) = PHCpack's real solutions", static_cast<long long>(phcReal.size()),
+               static_cast<long long>(s.count()));
+  double worstMatch = 0;
+  for (const auto& h : s.postures) {
+    const Eigen::Matrix<double, 8, 1> x = StudyParameters<S>::fromSE3(h).coeffs();
+    double best = 1;
+    for (const auto& y : phcReal) best = std::min(best, std::max(0.0, 1 - std::pow(x.dot(y), 2) / (x.squaredNorm() * y.squaredNorm())));
+    worstMatch = std::max(worstMatch, best);
+  }
+  c.checkResidual("every drawn mode is one of PHCpack's real solutions (1 − cos² in PR⁷)", worstMatch, 1e-12);
+  if (c.makeFigures() && s.count() > 0) {
+    // Show the mode whose platform sits highest above the base (the figure's upright pose).
+    std::size_t shown = 0;
+    for (std::size_t k = 1; k < s.count(); ++k)
+      if (s.postures[k].translation().z() > s.postures[shown].translation().z()) shown = k;
+    drawFigure(c, P, s, shown, "GF-11-fig-11.1.png");
+  }
+}
+
+}  // namespace
+
+SOMA_STUDY_DOUBLE("GF-11-fig-11.1", "Fig. 11.1: a general Stewart platform, its real assembly modes checked by PHCpack", "GF §11.5.4",
+                  figure111);
+
+}  // namespace soma::studies::gf11fig1::SOMA_UNITY_ID
