@@ -130,6 +130,7 @@ struct Measured {
   double worstKappaEps = 0;      ///< worst κ ε_S over the matched pairs
   std::string notes;
   bool alone = false;  ///< float without its escalation to double
+  double eps = 0;  ///< ε of the rung
 };
 
 /// The first n problems in S; every real pair matched to the nearest reference pair.
@@ -143,6 +144,7 @@ template <class S> Measured measure(const std::vector<Problem>& problems, const 
   if (!escalate) g.scalar += " (no escalation)";
   out.alone = !escalate;
   const double eps = toDouble(Tolerance<S>::epsilon());
+  out.eps = eps;
   std::vector<double> times;
   double worstForward = 0;
   for (std::size_t k = 0; k < n; ++k) {
@@ -265,12 +267,13 @@ void burmesterTrade(Context& c) {
                                m.problems, m.worstKappaEps),
                    (long long)m.problems, (long long)m.countsAgree);
     TradeRung r = m.rung;
-    if (!m.notes.empty()) r.comment += "; " + m.notes;
+    if (m.notes.find("infinity") != std::string::npos) r.comment += "; " + m.notes;  // the rest: the row's label
     t.rungs.push_back(r);
   }
   for (std::size_t i = 2; i < ms.size(); ++i)
-    c.checkEqual(fmt::format("worst pivot error in {} below the error in {}", ms[i].rung.scalar, ms[i - 1].rung.scalar),
-                 "below", ms[i].rung.worstError < ms[i - 1].rung.worstError ? "below" : "not below");
+    if (ms[i].eps < ms[i - 1].eps)  // (mpfr below 113 bits is not a wider rung than float128)
+      c.checkEqual(fmt::format("worst pivot error in {} below the error in {}", ms[i].rung.scalar, ms[i - 1].rung.scalar),
+                   "below", ms[i].rung.worstError < ms[i - 1].rung.worstError ? "below" : "not below");
   c.note(fmt::format(
       "{} five-position problems from random crank-rockers (seed 5352026; positions rounded to float, so every rung "
       "solves the same problem), solved by BurmesterSynthesis<S>::burmesterPairs; the first {}, {}, {}, {}, {} in "

@@ -133,6 +133,7 @@ struct Measured {
   double worstRatio = 0;  ///< worst invariant error / (1024 ε L) over the resolved samples
   std::string worstWhere;
   int smallestResolvedExponent = 0;  ///< the largest k of a correct identification in every family
+  double eps = 0;  ///< ε of the rung
 };
 
 /// Identify every sample in S; the invariant errors against the construction, computed in mpfr
@@ -145,6 +146,7 @@ template <class S> Measured measure(const std::vector<Sample>& samples, int refB
   r.scalar = std::string(scalarName<S>());
   if constexpr (std::is_same_v<S, mpreal>) r.scalar += " (" + std::to_string(bits) + " bits)";
   const double eps = toDouble(Tolerance<S>::epsilon());
+  m.eps = eps;
   const double tolRank = toDouble(Tolerance<S>::rank());  // the identification's decision threshold / L
   std::vector<double> times;
   double worstPitch = 0, worstAxis = 0;
@@ -210,8 +212,8 @@ template <class S> Measured measure(const std::vector<Sample>& samples, int refB
   timeQuantiles(times, r.medianSeconds, r.p95Seconds);
   r.worstError = std::max(worstPitch, worstAxis);
   r.worstErrorText = io::numberText(r.worstError);  // measured in double (a difference of the rung's values)
-  r.comment = fmt::format("type right on {} of {} ({:.1f} %), in every family down to δ = 2^-{} at least; worst "
-                          "pitch error {:.3g}, worst axis error {:.3g} (sin θ × gap); never re-solved in a wider scalar",
+  r.comment = fmt::format("type right on {} of {} ({:.1f} %), in every family down to δ = 2^-{} at least; pitch "
+                          "error {:.3g}, axis error {:.3g} (sin θ × gap)",
                           m.right, samples.size(), 100.0 * double(m.right) / double(samples.size()),
                           m.smallestResolvedExponent, worstPitch, worstAxis);
   return m;
@@ -257,8 +259,9 @@ void screwIdentificationTrade(Context& c) {
   }
   // The resolution grows with the rung: each rung identifies at least the sets the previous one did.
   for (std::size_t i = 1; i < ms.size(); ++i)
-    c.checkEqual(fmt::format("{} identifies at least as many sets right as {}", ms[i].rung.scalar, ms[i - 1].rung.scalar),
-                 "yes", ms[i].right >= ms[i - 1].right ? "yes" : "no");
+    if (ms[i].eps < ms[i - 1].eps)  // (mpfr below 113 bits is not a wider rung than float128)
+      c.checkEqual(fmt::format("{} identifies at least as many sets right as {}", ms[i].rung.scalar, ms[i - 1].rung.scalar),
+                   "yes", ms[i].right >= ms[i - 1].right ? "yes" : "no");
   c.note(fmt::format(
       "{} generator sets: {} families × {} distances δ = 2^-k (k = 1 … 330) × {} seeds, each Ad(g)·N·A with N the "
       "normal form (GF Tables 8.1, 8.2), g a random frame and A a random well-conditioned basis change, built in mpfr "
