@@ -5,6 +5,7 @@
 // the defining equations evaluated in mpfr, the real-pair counts against the reference's, and the
 // float rung's escalation (its conic intersection runs in double).
 #include "soma/geometry/planar/burmester_synthesis.hpp"
+#include "soma/studies/mpfr_bits.hpp"
 #include "soma/studies/study.hpp"
 
 #include <fmt/format.h>
@@ -129,7 +130,6 @@ struct Measured {
   double worstForwardRatio = 0;  ///< worst forward error / (κ · residual)
   double worstKappaEps = 0;      ///< worst κ ε_S over the matched pairs
   std::string notes;
-  bool alone = false;  ///< float without its escalation to double
   double eps = 0;  ///< ε of the rung
 };
 
@@ -142,7 +142,6 @@ template <class S> Measured measure(const std::vector<Problem>& problems, const 
   g.scalar = std::string(scalarName<S>());
   if constexpr (std::is_same_v<S, mpreal>) g.scalar += " (" + std::to_string(bits) + " bits)";
   if (!escalate) g.scalar += " (no escalation)";
-  out.alone = !escalate;
   const double eps = toDouble(Tolerance<S>::epsilon());
   out.eps = eps;
   std::vector<double> times;
@@ -209,11 +208,8 @@ template <class S> Measured measure(const std::vector<Problem>& problems, const 
 // GF §5.3 (finite-position Burmester theory, the analogue of GF-5.3.5-burmester-count);
 // SOMA-burmester-speed-accuracy
 void burmesterTrade(Context& c) {
-  const int bits = mpfrBits();
-  struct Restore {
-    int bits;
-    ~Restore() { setMpfrBits(bits); }
-  } restore{bits};
+  const MpfrBitsRestore restore;  // the rung's precision, restored on any exit
+  const int bits = restore.bits();
   const int refBits = std::max(512, 2 * bits + 64);
   const std::vector<Problem> problems = randomProblems(100, 5352026);
   setMpfrBits(refBits);

@@ -6,6 +6,7 @@
 // construction's type, and the error of the invariants (pitches, principal axes) against the
 // construction's exact ones.
 #include "soma/geometry/screws/identification.hpp"
+#include "soma/studies/mpfr_bits.hpp"
 #include "soma/studies/study.hpp"
 
 #include <fmt/format.h>
@@ -221,11 +222,8 @@ template <class S> Measured measure(const std::vector<Sample>& samples, int refB
 
 // GF §8.2–8.4 (identifyScrewSystem); SOMA-screw-identification-speed-accuracy
 void screwIdentificationTrade(Context& c) {
-  const int bits = mpfrBits();
-  struct Restore {
-    int bits;
-    ~Restore() { setMpfrBits(bits); }
-  } restore{bits};
+  const MpfrBitsRestore restore;  // the rung's precision, restored on any exit
+  const int bits = restore.bits();
   const int refBits = std::max(512, 2 * bits + 64);
   setMpfrBits(refBits);
   const std::vector<Sample> samples = buildSamples(822026);
