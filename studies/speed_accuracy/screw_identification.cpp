@@ -269,7 +269,9 @@ void screwIdentificationTrade(Context& c) {
       "the construction's, computed in mpfr; an axis error is sin θ × its pitch gap. identifyScrewSystem has no "
       "escalation: every rung solves in itself. Time: the least of three runs per set (the machine is shared); the "
       "float, long double, float128 and mpfr instantiations of the library are compiled at -O1, double at -O3 "
-      "(cmake/SomaInstantiate.cmake), which is why float is slower than double.",
+      "(cmake/SomaInstantiate.cmake), which is why float is slower than double. Double's p95 is the two reciprocal "
+      "families: in this binary they run an -O0 copy of smallComplement<double> that a study compiled at -O0 "
+      "instantiates and the linker keeps (5.8 µs instead of ~100 µs in a program of its own; papers/selig-2005/ch08.md).",
       samples.size(), std::size(kFamilies), std::size(kExponents), kSeedsPerCell, refBits));
   c.trade(std::move(t), "SOMA-screw-identification-speed-accuracy.png",
           "Screw-system identification: median time per generator set (point; bar to the p95) against the worst "
