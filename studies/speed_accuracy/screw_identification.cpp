@@ -271,7 +271,8 @@ void screwIdentificationTrade(Context& c) {
       "float, long double, float128 and mpfr instantiations of the library are compiled at -O1, double at -O3 "
       "(cmake/SomaInstantiate.cmake), which is why float is slower than double. Double's p95 is the two reciprocal "
       "families: in this binary they run an -O0 copy of smallComplement<double> that a study compiled at -O0 "
-      "instantiates and the linker keeps (5.8 µs instead of ~100 µs in a program of its own; papers/selig-2005/ch08.md).",
+      "instantiates and the linker keeps (~100 µs per set here, 5.8 µs linked into a program of its own; "
+      "papers/selig-2005/ch08.md).",
       samples.size(), std::size(kFamilies), std::size(kExponents), kSeedsPerCell, refBits));
   c.trade(std::move(t), "SOMA-screw-identification-speed-accuracy.png",
           "Screw-system identification: median time per generator set (point; bar to the p95) against the worst "
