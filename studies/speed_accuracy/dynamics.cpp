@@ -3,6 +3,7 @@
 // normwise error of the torques against the same algorithm in mpfr at ≥ 2p + 64 bits (the
 // robot, state and accelerations converted exactly).
 #include "gf13/common.hpp"
+#include "soma/studies/mpfr_bits.hpp"
 
 #include <fmt/format.h>
 
@@ -42,11 +43,8 @@ TradeRung measure(const SerialDynamics<double>& robot, const std::vector<Case>& 
     per.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / double(n));
   }
   // The reference: the same chain in mpfr at ≥ 2p + 64 bits (the precision restored on any exit).
-  const int oldBits = mpfrBits();
-  struct Restore {
-    int bits;
-    ~Restore() { setMpfrBits(bits); }
-  } restore{oldBits};
+  const MpfrBitsRestore restore;
+  const int oldBits = restore.bits();
   setMpfrBits(std::max(320, 2 * digits<S>() + 64));
   const SerialDynamics<mpreal> ref = castRobot<mpreal>(robot);
   mpreal worst = 0;

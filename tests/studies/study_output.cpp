@@ -140,6 +140,8 @@ TEST_CASE("a speed/accuracy table is carried to report.json and the terminal, es
   CHECK(text.find(rungs[1]["worst_error_text"].get<std::string>()) != std::string::npos);
   const std::string html = speedAccuracySectionHtml({r});
   CHECK(html.find("Speed vs accuracy") != std::string::npos);
+  // Not a section.chapter: the page's filter script hides every chapter without a study in it.
+  CHECK(html.find("<section class=\"extra\" id=\"speed-vs-accuracy\">") != std::string::npos);
   CHECK(html.find("166 of 200 (to double)") != std::string::npos);
   CHECK(speedAccuracySectionHtml({}).empty());
 }

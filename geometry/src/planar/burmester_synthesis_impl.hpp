@@ -539,7 +539,7 @@ template <class S> Poly2<S> BurmesterSynthesis<S>::circlePointCurve(int k) const
 // polished by Newton on the four bilinear equations e_2..e_5 in the working scalar.
 template <class S>
 std::vector<BurmesterPair<S>> BurmesterSynthesis<S>::burmesterPairs(int* complexCount, S* complexResidual, S* algebraicResidual,
-                                                                    std::string* notes) const {
+                                                                    std::string* notes, bool escalateFloat) const {
   using std::abs;
   using std::sqrt;
   if (size() != 5) throw InvalidInput("Burmester pairs: need exactly 5 positions, got " + std::to_string(size()));
@@ -550,13 +550,34 @@ std::vector<BurmesterPair<S>> BurmesterSynthesis<S>::burmesterPairs(int* complex
   std::vector<SE2<S>> q;
   for (const auto& p : pos_) q.push_back(SE2<S>(p.angle(), Vec2<S>((p.translation() - mean) / scale_)));
   // The algebraic step runs in W: S itself, except float, whose 24-bit conic intersection loses
-  // real pairs on ill-conditioned sets; float solves in double and polishes in float (noted).
+  // real pairs on ill-conditioned sets; float solves in double and polishes in float (noted),
+  // unless escalateFloat is false (the float rung alone: its solutions are carried in W exactly).
   using W = std::conditional_t<std::is_same_v<S, float>, double, S>;
-  std::vector<SE2<W>> qw;
-  for (const auto& p : q) qw.push_back(SE2<W>(scalarCast<W>(p.angle()), Vec2<W>(scalarCast<W>(p.translation()(0)), scalarCast<W>(p.translation()(1)))));
-  const std::vector<AlgebraicSolution<W>> sols = burmesterAlgebraic(qw);
+  const bool floatAlone = std::is_same_v<S, float> && !escalateFloat;
+  std::vector<AlgebraicSolution<W>> sols;
+  if constexpr (std::is_same_v<S, float>) {
+    if (floatAlone) {
+      for (const AlgebraicSolution<S>& f : burmesterAlgebraic(q)) {
+        AlgebraicSolution<W> w;
+        for (int k = 0; k < 4; ++k) w.x[k] = Cx<W>(W(f.x[k].re), W(f.x[k].im));
+        w.residualBefore = W(f.residualBefore);
+        w.residualAfter = W(f.residualAfter);
+        w.atInfinity = f.atInfinity;
+        sols.push_back(w);
+      }
+    }
+  }
+  if (!floatAlone) {
+    std::vector<SE2<W>> qw;
+    for (const auto& p : q) qw.push_back(SE2<W>(scalarCast<W>(p.angle()), Vec2<W>(scalarCast<W>(p.translation()(0)), scalarCast<W>(p.translation()(1)))));
+    sols = burmesterAlgebraic(qw);
+  }
+  // The real/complex decision at the precision the solutions were computed in.
+  const W realTol = floatAlone ? W(Tolerance<S>::sqrtEpsilon()) : Tolerance<W>::sqrtEpsilon();
   if (notes) {
-    *notes = std::is_same_v<S, float> ? "conic intersection solved in double, pairs polished in float" : "";
+    *notes = !std::is_same_v<S, float> ? ""
+             : floatAlone              ? "conic intersection solved in float (no escalation)"
+                                       : "conic intersection solved in double, pairs polished in float";
   }
   int complexRoots = 0, infinite = 0;
   S worstComplex(0), worstAlg(0);
@@ -572,7 +593,7 @@ std::vector<BurmesterPair<S>> BurmesterSynthesis<S>::burmesterPairs(int* complex
       im = std::max<W>(im, abs(v.im));
       mag += v.abs();
     }
-    if (im > Tolerance<W>::sqrtEpsilon() * W(16) * mag) {
+    if (im > realTol * W(16) * mag) {
       ++complexRoots;
       worstComplex = std::max<S>(worstComplex, scalarCast<S>(sol.residualAfter));
       continue;

@@ -118,6 +118,9 @@ table.checks col.c-idx { width: 30px; } table.checks col.c-name { width: 30%; }
 table.checks col.c-err { width: 80px; } table.checks col.c-tol { width: 92px; }
 table.checks col.c-time { width: 70px; } table.checks col.c-res { width: 50px; }
 table.checks td.idx { color: var(--muted); text-align: right; }
+table.trade th { white-space: normal; }
+table.trade col.t-scalar { width: 150px; } table.trade col.t-n { width: 92px; } table.trade col.t-time { width: 76px; }
+table.trade col.t-err { width: 190px; } table.trade col.t-esc { width: 190px; }
 ul.notes { margin: 8px 0 4px; padding-left: 20px; font-size: 14px; }
 ul.notes li { margin: 2px 0; }
 .figures { display: flex; flex-wrap: wrap; gap: 16px; margin: 10px 0 4px; }

@@ -16,7 +16,9 @@ std::string speedAccuracySectionHtml(const std::vector<StudyResult>& results) {
   int tables = 0;
   for (const auto& r : results) tables += int(r.trades.size());
   if (tables == 0) return {};
-  h << "<section class=\"chapter\" id=\"speed-vs-accuracy\">\n<h2>Speed vs accuracy</h2>\n"
+  // class "extra" like the other added sections: the page's filter hides every section.chapter
+  // that holds no visible study (report_page.hpp), which would hide this one always.
+  h << "<section class=\"extra\" id=\"speed-vs-accuracy\">\n<h2>Speed vs accuracy</h2>\n"
     << "<p>Each headline solver on every rung of the scalar ladder: the time per sample (median and "
        "95th percentile, wall time on the machine above) and the worst error, with the samples that "
        "escalated to a higher rung counted (their time is in the rung's time). The errors are "
@@ -26,7 +28,8 @@ std::string speedAccuracySectionHtml(const std::vector<StudyResult>& results) {
       h << "<h3 style=\"margin-top:18px\">" << htmlEscape(t.solver) << " <span style=\"font-weight:normal\">— <a href=\"#"
         << htmlEscape(studyAnchor(r.study ? r.study->id : "")) << "\">" << htmlEscape(r.study ? r.study->id : "")
         << "</a></span></h3>\n";
-      h << "<table class=\"checks\"><thead><tr><th>scalar</th><th>" << htmlEscape(t.sample)
+      h << "<table class=\"checks trade\"><colgroup><col class=\"t-scalar\"><col class=\"t-n\"><col class=\"t-time\">"
+           "<col class=\"t-time\"><col class=\"t-err\"><col class=\"t-esc\"><col></colgroup><thead><tr><th>scalar</th><th>" << htmlEscape(t.sample)
         << "s</th><th>median</th><th>p95</th><th>" << htmlEscape(t.errorLabel)
         << "</th><th>escalated</th><th></th></tr></thead>\n<tbody>\n";
       for (const auto& g : t.rungs) {

@@ -196,6 +196,34 @@ TEMPLATE_TEST_CASE("five arbitrary positions: every pair is exact, real + comple
   }
 }
 
+TEST_CASE("five positions in float alone (escalateFloat = false): the pairs of the escalated float solve",
+          "[planar][synthesis]") {
+  // The same positions solved twice in float: with the conic intersection in double (default) and
+  // in float; both polish in float, so where the counts agree the pairs agree to float's rounding
+  // times the pair's conditioning κ: 16 √ε of the data scale holds for κ up to 16 / √ε ≈ 6.5e4.
+  auto& g = rng(605);
+  int agreed = 0;
+  for (int c = 0; c < 10; ++c) {
+    const BurmesterSynthesis<float> bs(randomPositions<float>(g, 5));
+    std::string nd, nf;
+    int cd = -1, cf = -1;
+    const auto esc = bs.burmesterPairs(&cd, nullptr, nullptr, &nd);
+    const auto alone = bs.burmesterPairs(&cf, nullptr, nullptr, &nf, false);
+    CHECK(nf == "conic intersection solved in float (no escalation)");
+    CHECK(int(alone.size()) + cf == 4);
+    for (const auto& p : alone) CHECK(p.residual <= tolFor<float>(1 << 14));
+    if (alone.size() != esc.size()) continue;
+    ++agreed;
+    for (const auto& p : alone) {
+      float nearest = 1e30f;
+      for (const auto& q : esc)
+        nearest = std::min(nearest, float((p.centre - q.centre).norm() + (p.circle - q.circle).norm()));
+      CHECK(nearest <= Tolerance<float>::sqrtEpsilon() * bs.scale() * 16);
+    }
+  }
+  CHECK(agreed >= 9);  // a count may differ only on a near-tangent real/complex pair
+}
+
 TEST_CASE("synthesis: bad input", "[planar][synthesis][extremes]") {
   using S = double;
   CHECK_THROWS_AS(BurmesterSynthesis<S>({SE2<S>()}), InvalidInput);

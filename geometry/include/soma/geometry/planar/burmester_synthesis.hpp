@@ -76,8 +76,11 @@ template <class S> class BurmesterSynthesis {
   /// `algebraicResidual` the largest residual of the four solutions before any Newton step,
   /// `notes` how it was solved (float: the conic intersection runs in double, the pairs are
   /// polished in float) and any solution at infinity (a slider dyad, not counted).
+  /// `escalateFloat` (float only): false solves the conic intersection in float too, the float
+  /// rung alone (SOMA-burmester-speed-accuracy measures what it loses).
   std::vector<BurmesterPair<S>> burmesterPairs(int* complexCount = nullptr, S* complexResidual = nullptr,
-                                               S* algebraicResidual = nullptr, std::string* notes = nullptr) const;
+                                               S* algebraicResidual = nullptr, std::string* notes = nullptr,
+                                               bool escalateFloat = true) const;
 
   /// A 4-bar from two pairs (a: crank c1 = a.centre, b: rocker c4 = b.centre); the coupler
   /// point is the moving frame's origin. Its coupler frame relates to the moving frame by
