@@ -27,6 +27,18 @@ class SweepCommand : public Command {
     spec.flag("--quiet", quiet_, "no progress lines on stderr");
   }
   int run(const Spec&, const Invocation&) override {
+    try {
+      return runSweepFile();
+    } catch (const std::exception&) {
+      // Under mpirun every rank reads the same file and meets the same defect: rank 0 says it
+      // (main prints the message), the other ranks exit 2 without repeating it.
+      if (sweep::mpiLaunchRank() > 0) return 2;
+      throw;
+    }
+  }
+
+ private:
+  int runSweepFile() {
     const io::SweepFile s = io::readSweep(file_);
     sweep::SweepOptions o;
     o.out = out_;
@@ -41,7 +53,6 @@ class SweepCommand : public Command {
     return r.failed == 0 ? 0 : 1;
   }
 
- private:
   std::string file_, out_ = "out/sweep";
   int threads_ = 0;
   bool quiet_ = false;

@@ -406,6 +406,12 @@ bool mpiLaunched() {
   return false;
 }
 
+int mpiLaunchRank() {
+  for (const char* v : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"})
+    if (const char* r = std::getenv(v)) return std::atoi(r);
+  return 0;
+}
+
 io::SweepRow evaluatePoint(const io::SweepFile& s, std::size_t i) {
   io::SweepRow row;
   row.point = i;

@@ -80,8 +80,10 @@ soma_hostile_test("mode 4294967297 in a planar scene" 2 "planar_mode_wraps.json.
 soma_hostile_test("scene bits out of range" 2 "outputs\\.solve\\.bits: \"3\" is outside 16 … 8192"
                   ARGS scene ${CMAKE_SOURCE_DIR}/tests/io/scenes/bad_bits.json)
 # Flags: read as text by the same reader, in their ranges, before anything runs.
+if(SOMA_CLI_STUDIES)  # these run studies (not in a soma built without them)
 soma_hostile_test("--bits 100000" 2 "--bits: \"100000\" is outside 16 … 8192" TIMEOUT 10
                   ARGS study run GF-2.1-U1-unit-complex --scalar mpfr --bits 100000 --no-figures)
+endif()
 soma_hostile_test("--bits 0x10" 2 "--bits: \"0x10\" is not a decimal number \\(hexadecimal\\)" TIMEOUT 10
                   ARGS pose ${R}/puma560_pose.json --scalar mpfr --bits 0x10)
 soma_hostile_test("--bits 2.5" 2 "--bits: \"2.5\" is not an integer" TIMEOUT 10 ARGS pose ${R}/puma560_pose.json --bits 2.5)
@@ -122,14 +124,18 @@ soma_hostile_test("exact singularity: condition \"inf\"" 0 "\"condition\": \"inf
                   ARGS fk ${H}/robot_singular.json --joints 0,0 --json)
 
 # ---- output ------------------------------------------------------------------------------------
+if(SOMA_CLI_STUDIES)  # these run studies (not in a soma built without them)
 soma_hostile_test("stdout to /dev/full" 2 "soma: cannot write to standard output"
                   STDOUT /dev/full ARGS study list)
+endif()
 soma_hostile_test("--json to /dev/full" 2 "cannot write to standard output" STDOUT /dev/full
                   ARGS pose ${R}/puma560_pose.json --json)
 # --out below a regular file cannot be created (as root, a read-only mode bit would not stop us).
+if(SOMA_CLI_STUDIES)  # these run studies (not in a soma built without them)
 soma_hostile_test("study run --out unwritable" 2 "--out .*expect.cmake/out: cannot create the folder" TIMEOUT 30
                   NOMATCH "PASS|FAIL" ARGS study run GF-13-figures --out ${CMAKE_CURRENT_LIST_DIR}/expect.cmake/out)
 soma_hostile_test("report --out unwritable" 2 "--out .*expect.cmake/out: cannot create the folder" TIMEOUT 30
                   NOMATCH "PASS|FAIL" ARGS report --only GF-2.1-U1-unit-complex --out ${CMAKE_CURRENT_LIST_DIR}/expect.cmake/out)
+endif()
 soma_hostile_test("--json with a file name that is not UTF-8" 0 "\"input\": \"[^\"]*pose_�\\.json\""
                   RUN sh ARGS ${H}/non_utf8_name.sh $<TARGET_FILE:soma> ${R}/puma560_pose.json ${SOMA_HOSTILE_OUT})

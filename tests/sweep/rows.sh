@@ -4,7 +4,8 @@
 # Rows are compared without their last field, the wall seconds.
 # mpiresume: the same kill and resume under `mpirun -np 2` (the whole job killed, its process group),
 # the rows identical to the single-process run.
-# Usage: rows.sh parallel|resume SOMA REPO WORK [MPIEXEC]; rows.sh mpiresume SOMA REPO WORK MPIEXEC
+# mpibad: a bad sweep under `mpirun -np 2` is said once (rank 0), exit non-zero, no rows.
+# Usage: rows.sh parallel|resume SOMA REPO WORK [MPIEXEC]; rows.sh mpiresume|mpibad SOMA REPO WORK MPIEXEC
 set -euo pipefail
 mode=$1 soma=$2 repo=$3 work=$4 mpiexec=${5:-}
 rm -rf "$work" && mkdir -p "$work"
@@ -113,5 +114,18 @@ mpiresume)
     { echo "FAIL: the resumed run did not skip exactly the $written complete rows"; exit 1; }
   same "$work/reference" "$work/resumed"
   echo "PASS: mpirun -np 2 killed at $written rows, resumed on 2 ranks, $total rows identical to the single-process run"
+  ;;
+mpibad)
+  # A bad sweep under mpirun -np 2: every rank meets the defect, rank 0 alone says it, the job exits 2.
+  [ -n "$mpiexec" ] || { echo "FAIL: mpibad needs MPIEXEC"; exit 1; }
+  rc=0
+  "$mpiexec" --allow-run-as-root --oversubscribe -np 2 "$soma" sweep "$repo/tests/sweep/bad/empty_range.json" \
+    --out "$work/bad" --quiet > "$work/bad.txt" 2>&1 || rc=$?
+  cat "$work/bad.txt"
+  said=$(grep -c "^soma: .*empty_range.json" "$work/bad.txt" || true)
+  [ "$said" = 1 ] || { echo "FAIL: the defect was said $said times (once expected)"; exit 1; }
+  [ "$rc" != 0 ] || { echo "FAIL: mpirun exited 0"; exit 1; }
+  [ ! -e "$work/bad/rows.jsonl" ] || { echo "FAIL: rows written for a bad sweep"; exit 1; }
+  echo "PASS: a bad sweep under mpirun -np 2 said once (exit $rc), no rows"
   ;;
 esac

@@ -50,6 +50,9 @@ SweepSummary runSweep(const io::SweepFile& sweep, const SweepOptions& options);
 
 /// Whether this process was started by mpirun (Open MPI's or a PMI's environment) and soma has MPI.
 bool mpiLaunched();
+/// This process's rank as mpirun's environment gives it (before MPI_Init), 0 without mpirun: every
+/// rank meets a bad sweep file alike, and only rank 0 says so.
+int mpiLaunchRank();
 /// Whether soma was built with MPI (SOMA_MPI).
 bool mpiAvailable();
 
