@@ -411,7 +411,13 @@ void closedLoop(Context& ctx) {
   // 5. energy: work of controller + gravity = ΔE_K, error O(h⁴)
   const Run e1 = simulate(peg, 0.02, true), e2 = simulate(peg, 0.01, true);
   ctx.checkResidual("|ΔE_K − ∫(W + G)ᵀV dt| with h = 0.005 (J; RKMK4 + Simpson)", full.energyErr, 1e-7);
-  ctx.checkNear("energy error ratio h = 0.02 : h = 0.01 (order 4 ⇒ 16)", 16.0, e1.energyErr / e2.energyErr, 4.0);
+  // the order fitted over h = 0.02, 0.01, 0.005: log₂(e(h)/e(h/4))/2; the O(h) next term of the error
+  // expansion shifts it (pairwise orders 3.979, 3.993: 0.014 here); margin 0.05 (papers/checks.md)
+  ctx.checkNear("fitted order of the energy error, h = 0.02, 0.01, 0.005 (RKMK4 + Simpson: 4 ± 0.05)", 4.0,
+                std::log2(e1.energyErr / full.energyErr) / 2, 0.05);
+  ctx.note("Energy error at h = 0.02, 0.01, 0.005: " + toString(e1.energyErr, 3) + ", " + toString(e2.energyErr, 3) + ", " +
+           toString(full.energyErr, 3) + " J; pairwise orders " + toString(std::log2(e1.energyErr / e2.energyErr), 4) + ", " +
+           toString(std::log2(e2.energyErr / full.energyErr), 4) + ".");
   sphereContact(ctx);
   ctx.note("Peg 1.2 kg, centre of mass (0.05, −0.03, 0.12) m, hole axis = z (vertical), g = 9.81; gains K_p = 16, K_d = 10. Max drift " +
            toString(full.drift, 2) + "; motion vs prediction " + toString(full.predDev, 2) + "; late rate " + toString(rate, 8) +
