@@ -86,9 +86,9 @@ template <class S> void dexpHausdorff(Context& c) {
   // The printed 4-term series against the corrected one, both evaluated in S: they differ by
   // (ad² − ad³)ẋ/4!, far above rounding. Rounding bound of the difference: each series sums
   // ad^k ẋ/(k+1)! (k ≤ 3) with 6-term dot products, ≤ 6(k+1)ε‖ad‖^k/(k+1)! |ẋ| per term, summed ≤ 6ε e^‖ad‖ |ẋ|;
-  // two series: 12ε e^‖ad‖ |ẋ|, k = 16.
-  const S roundingBound = Tolerance<S>::identity(16) * exp(a) * maxAbs(xd);
-  c.checkPrintedFails("4th term (1/4!)[X,[X,Ẋ]]: |printed − corrected 4-term truncation| (≤ 16ε e^‖ad‖|ẋ| is rounding)", "E4.9",
+  // two series: 12ε e^‖ad‖ |ẋ|. (In float the miss is 1.6e3× this bound: the rule's 10³ holds with room.)
+  const S roundingBound = Tolerance<S>::identity(12) * exp(a) * maxAbs(xd);
+  c.checkPrintedFails("4th term (1/4!)[X,[X,Ẋ]]: |printed − corrected 4-term truncation| (≤ 12ε e^‖ad‖|ẋ| is rounding)", "E4.9",
                       maxAbs(Vec6<S>(printed4 * xd - dexpSeries(x3, 4) * xd)), roundingBound);
   c.record("4th term (1/4!)[X,[X,Ẋ]]: truncation error exceeds the correct series' bound ‖ad‖⁴e^‖ad‖/5! |ẋ| [as printed]",
            "fails (erratum E4.9)", "error " + str(errPrinted) + " vs bound " + str(remainder), toDouble(errPrinted),
