@@ -153,7 +153,7 @@ void ball(Context& c) {
                       3 * w * w * cross2<double>(u, rdd);
   const double printed = corr + 6 * w * w * w * u.dot(rd);
   c.checkResidual("ṗᵀE₂p⃛ = 3ω²ω̇|u|² − 3ω³uᵀṙ − 3ωω̇uᵀE₂ṙ − 3ω²uᵀE₂r̈ (corrected sign)", std::abs(direct - corr), tol(4096));
-  c.checkPrintedFails("ṗᵀE₂p⃛ with +3ω³(p − r)ᵀṙ", "E5.10", std::abs(direct - printed), 1e-3);
+  c.checkPrintedFails("ṗᵀE₂p⃛ with +3ω³(p − r)ᵀṙ", "E5.10", std::abs(direct - printed), tol(4096));
   // printed x and λ (E5.11): catalogue residuals −3.92 and 20.1
   const V2 xP = w * w * rd + wd * E2(rd) - w * E2(rdd);
   const double lamP = 2 * cross2<double>(xP, rd) / (w * xP.squaredNorm());
