@@ -33,26 +33,6 @@ void referenceLog(Quat<mpreal> q, const Vec3<mpreal>& t, Vec3<mpreal>& w, Vec3<m
   v = dexpSeries(wt, 400).fullPivLu().solve(t);
 }
 
-/// exp of a 4×4 matrix in mpfr by its Taylor series with scaling and squaring: a method that shares
-/// nothing with referenceLog (no atan2, no Jl⁻¹), so exp(reference) = X checks the reference.
-Mat4<mpreal> expSeries(const Mat4<mpreal>& A) {
-  int squarings = 0;
-  Mat4<mpreal> B = A;
-  while (B.cwiseAbs().rowwise().sum().maxCoeff() > mpreal(0.5)) {
-    B /= 2;
-    ++squarings;
-  }
-  Mat4<mpreal> sum = Mat4<mpreal>::Identity(), term = Mat4<mpreal>::Identity();
-  const mpreal stop = pow(mpreal(2), -mpfrBits() - 8);
-  for (int k = 1; k < 1000; ++k) {
-    term = Mat4<mpreal>(term * B) / k;
-    sum += term;
-    if (term.cwiseAbs().maxCoeff() < stop) break;
-  }
-  for (int k = 0; k < squarings; ++k) sum = Mat4<mpreal>(sum * sum);
-  return sum;
-}
-
 /// Errors of SE3<S>::log at the given angles (random axes and translations, fixed seed).
 template <class S> std::vector<Sample> sweep(const std::vector<double>& deltas, const std::vector<double>& thetas,
                                              double* referenceResidual = nullptr) {
@@ -76,13 +56,13 @@ template <class S> std::vector<Sample> sweep(const std::vector<double>& deltas, 
     for (int k = 0; k < 3; ++k) tr(k) = exact(X.translation()(k), bits);
     Vec3<mpreal> wr, vr;
     referenceLog(q, tr, wr, vr);
-    if (referenceResidual) {  // |exp(ref) − X| / (1 + |t|) in units of 2^−bits
+    if (referenceResidual) {  // |exp(ref) − X| / (1 + |t|) in units of 2^−bits (exp by expSeries, common.hpp)
       Mat4<mpreal> X4 = Mat4<mpreal>::Identity();
       Quat<mpreal> qn = q;
       qn.coeffs() /= sqrt(qn.coeffs().squaredNorm());
       X4.topLeftCorner<3, 3>() = qn.toRotationMatrix();
       X4.topRightCorner<3, 1>() = tr;
-      const mpreal r = Mat4<mpreal>(expSeries(SE3Tangent<mpreal>(wr, vr).hat()) - X4).cwiseAbs().maxCoeff() /
+      const mpreal r = Mat4<mpreal>(expSeries(Mat4<mpreal>(SE3Tangent<mpreal>(wr, vr).hat())) - X4).cwiseAbs().maxCoeff() /
                        (1 + tr.cwiseAbs().maxCoeff()) / pow(mpreal(2), -bits);
       *referenceResidual = std::max(*referenceResidual, r.toDouble());
     }
@@ -149,10 +129,11 @@ template <class S> void logAccuracy(Context& c) {
              w.ulps, 4.0, w.ulps <= 4.0);
   }
   // The reference checked by an independent method: exp of the reference log by the Taylor series
-  // with scaling and squaring (expSeries), compared with X in mpfr. The series is summed to 2^−(bits+8)
-  // and each of the ≤ 3 squarings of a 4×4 product adds ≈ 4·2^−bits relative: the residual stays
-  // below 2^−(bits−10)(1 + |t|), i.e. ≤ 1024 units of 2^−bits. At π − δ the log's condition 1/δ ≤ 1.1e15
-  // keeps the reference's forward error ≤ 2^−(bits−60), far below an ulp of every rung (bits ≥ 2p + 64).
+  // with scaling and squaring (expSeries, gf04/common.hpp: no atan2, no Jl⁻¹), compared with X in
+  // mpfr. The series is summed to ε² = 2^−2·bits and each of the ≤ 3 squarings of a 4×4 product adds
+  // ≈ 4·2^−bits relative: the residual stays below 2^−(bits−10)(1 + |t|), i.e. ≤ 1024 units of 2^−bits.
+  // At π − δ the log's condition 1/δ ≤ 1.1e15 keeps the reference's forward error ≤ 2^−(bits−60), far
+  // below an ulp of every rung (bits ≥ 2p + 64).
   c.checkResidual("mpfr reference log verified independently: |exp(ref) − X| / (1 + |t|) over the sweep, "
                   "in units of 2^−bits (Taylor series with scaling and squaring; ≤ 2^10)",
                   refResidual, 1024.0);
