@@ -129,7 +129,18 @@ template <class S> void subgroupsR3SO3(Context& c) {
   }
   c.checkNear("2-planes of so(3): closure defect = 1 (min over 200 random planes)", S(1), minDefect, tol);
   c.checkNear("… and max", S(1), maxDefect, tol);
-  c.checkEqual("dimensions of the subalgebras of so(3)", "0,1,3", "0,1,3");
+  // The dimensions that occur, computed: 0 and 3 always; 1 when a line closes ([a, a] = a × a = 0 for
+  // the 200 sampled a); 2 only if some sampled plane closed (defect ≤ tol, which the min above rules out).
+  S lineBracket(0);
+  for (int t = 0; t < 200; ++t) {
+    const Vec3<S> a = uniVec3<S>(g);
+    lineBracket = std::max(lineBracket, S(sqrt(a.cross(a).squaredNorm())));
+  }
+  std::string dims = "0";
+  if (lineBracket <= tol) dims += ",1";
+  if (minDefect <= tol) dims += ",2";
+  dims += ",3";
+  c.checkEqual("dimensions of the subalgebras of so(3) (1: a line closes; 2: a sampled plane closes)", "0,1,3", dims);
   // O(2) ⊂ SO(3): rotations about z together with a half-turn about x; closed, two components.
   S eClose(0);
   int comps[2] = {0, 0};

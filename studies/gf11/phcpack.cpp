@@ -4,8 +4,10 @@
 // every path of a total-degree homotopy, and the study counts the regular finite solutions:
 // 6-3 platform 16, general 6-6 platform 40 (the tripod wrist, 8 and 6: GF-11.5.3-tripod-wrist-eight).
 // Double precision (PHCpack's).
+#include "soma/geometry/parallel/stewart.hpp"
 #include "soma/geometry/study/constraint_quadrics.hpp"
 #include "soma/geometry/study/intersection_ring.hpp"
+#include "soma/io/platform_file.hpp"
 #include "soma/studies/study.hpp"
 
 #include <fmt/format.h>
@@ -50,6 +52,7 @@ std::string linearPolynomial(const Eigen::VectorXd& w, const std::vector<std::st
 struct PhcSolution {
   Eigen::VectorXcd x;
   bool regular = false;
+  bool real = false;  ///< PHCpack's own verdict ("real regular")
 };
 struct PhcRun {
   std::vector<PhcSolution> solutions;
@@ -109,7 +112,9 @@ PhcRun runPhc(const std::vector<std::string>& equations, const std::vector<std::
       continue;
     }
     if (line.rfind("== err", 0) == 0) {
-      cur.regular = std::regex_search(line, m, verdict) && m[2] == "regular";
+      const bool matched = std::regex_search(line, m, verdict);
+      cur.regular = matched && m[2] == "regular";
+      cur.real = matched && m[1] == "real";
       run.solutions.push_back(cur);
       inSolution = false;
       continue;
@@ -125,6 +130,56 @@ std::vector<double> legLengths(const SE3<S>& pose, const std::vector<Vec3<S>>& b
   std::vector<double> L;
   for (std::size_t i = 0; i < base.size(); ++i) L.push_back((pose.act(top[i]) - base[i]).norm());
   return L;
+}
+
+/// The largest entry of the quadrics (the scale of xᵀQx for |x| = 1).
+double quadricScale(const std::vector<Mat8<S>>& quadrics) {
+  double m = 0;
+  for (const auto& Q : quadrics) m = std::max(m, Q.cwiseAbs().maxCoeff());
+  return m;
+}
+
+/// The example platform of GF-11.5.4-stewart-forty (studies/platforms/general.json): its real
+/// postures counted by PHCpack (real regular finite solutions of the Study-quadric system) and by
+/// soma's homotopy (solveStewartForward), two independent solvers.
+void examplePlatformReal(Context& c, const std::vector<std::string>& x8, const Eigen::MatrixXd& Qs) {
+  const auto P = io::readPlatform<S>(sourceRoot() / "studies" / "platforms" / "general.json");
+  std::vector<std::string> eqs;
+  std::vector<Mat8<S>> quadrics;
+  for (int i = 0; i < 6; ++i) quadrics.push_back(sphereConstraintQuadric<S>(P.base[i], P.platform[i], P.legs[i]));
+  for (const auto& Q : quadrics) eqs.push_back(quadricPolynomial(Q, x8));
+  eqs.push_back(quadricPolynomial(Qs, x8));
+  auto g = rng(1155);
+  Eigen::VectorXd w(8);
+  for (Eigen::Index i = 0; i < w.size(); ++i) w(i) = uni(g);  // a real chart: real solutions stay real
+  eqs.push_back(linearPolynomial(w, x8, 1.0));
+  const PhcRun run = runPhc(eqs, x8, "example");
+  int finite = 0, real = 0;
+  std::vector<Eigen::VectorXcd> reals;
+  for (const PhcSolution& s : run.solutions) {
+    if (!s.regular || !(s.x.head<4>().norm() > Tolerance<S>::sqrtEpsilon() * s.x.norm())) continue;
+    ++finite;
+    if (s.real) {
+      ++real;
+      reals.push_back(s.x);
+    }
+  }
+  const auto soma = solveStewartForward<S>(P);
+  c.note(fmt::format("example platform (general.json): {} paths, {} regular finite solutions, {} real (PHCpack), {:.1f} s; "
+                     "soma's homotopy: {} complex, {} real.", run.paths, finite, real, run.seconds, soma.complexCount(), soma.count()));
+  c.checkEqual("example platform (general.json): regular finite solutions, PHCpack = soma's homotopy", soma.complexCount(), finite);
+  c.checkEqual("example platform: real postures, PHCpack (its 'real' verdict) = soma's homotopy", (long long)soma.count(), real);
+  // each of soma's real postures is one of PHCpack's real solutions (1 − cos² in PR⁷)
+  double worst = 0;
+  for (const auto& h : soma.postures) {
+    const Vec8<S> y = StudyParameters<S>::fromSE3(h).coeffs();
+    double best = 1;
+    for (const auto& x : reals)
+      best = std::min(best, std::max(0.0, 1 - std::norm(x.dot(y.cast<std::complex<double>>())) / (x.squaredNorm() * y.squaredNorm())));
+    worst = std::max(worst, best);
+  }
+  c.checkResidual("example platform: each real posture of soma's homotopy is a real PHCpack solution (1 − cos², ≤ 16 ε)",
+                  worst, Tolerance<S>::identity(16));
 }
 
 void countsByPhcpack(Context& c) {
@@ -182,9 +237,15 @@ void countsByPhcpack(Context& c) {
                        run.reportedRegular, run.seconds, k.claim));
     c.checkEqual(k.name + ": regular finite solutions found by PHCpack", k.expected, finite);
     c.checkEqual(k.name + ": PHCpack's own regular count agrees", k.expected, run.reportedRegular);
-    c.checkResidual(k.name + ": soma's constraint quadrics vanish on PHCpack's solutions", worstResidual, 1e-8);
-    c.checkResidual(k.name + ": the generating real pose is among them (1 − cos² in PR⁷)", nearestPose, 1e-10);
+    // Bound: xᵀQx of 8 terms in double, |fl − exact| ≤ (n + 1)·n·ε·max|Q_ij|·|x|² (n = 8, 72 ε), plus
+    // PHCpack's 16-digit solution (relative error ≈ ε: 2·n·ε·max|Q_ij|·|x|², 16 ε): 88 ε, k = 128.
+    c.checkResidual(k.name + ": soma's constraint quadrics vanish on PHCpack's solutions (≤ 128 ε·max|Q_ij|·|x|²)",
+                    worstResidual, 128 * Tolerance<S>::epsilon() * quadricScale(quadrics));
+    // 1 − cos² of two unit directions agreeing to ≈ ε relative: the subtraction leaves a few ε.
+    c.checkResidual(k.name + ": the generating real pose is among them (1 − cos² in PR⁷, ≤ 16 ε)", nearestPose,
+                    Tolerance<S>::identity(16));
   }
+  examplePlatformReal(c, x8, Qs);
 }
 
 // ---- GF-11.5.3-tripod-wrist-eight -------------------------------------------------------------
@@ -246,8 +307,12 @@ void tripodWrist(Context& c) {
     c.note(fmt::format("{}: {} paths, {} regular, {} finite, {:.1f} s (PHCpack).", what, run.paths, regular, finite, run.seconds));
     c.checkEqual(what + ": regular solutions (PHCpack)", 8, regular);
     c.checkEqual(what + ": finite conformations (a ≠ 0)", planar ? 6 : 8, finite);
-    c.checkResidual(what + ": soma's leg quadrics vanish on them", worst, 1e-8);
-    c.checkResidual(what + ": the generating real pose is among them (1 − cos²)", nearest, 1e-10);
+    // Bound as in countsByPhcpack with n = 4: (n + 1)·n + 2n = 28 ε·max|R_ij|·|x|², k = 64.
+    double rScale = 0;
+    for (const auto& R : restricted) rScale = std::max(rScale, R.cwiseAbs().maxCoeff());
+    c.checkResidual(what + ": soma's leg quadrics vanish on them (≤ 64 ε·max|R_ij|·|x|²)", worst,
+                    64 * Tolerance<S>::epsilon() * rScale);
+    c.checkResidual(what + ": the generating real pose is among them (1 − cos², ≤ 16 ε)", nearest, Tolerance<S>::identity(16));
   }
 }
 

@@ -10,6 +10,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <array>
+
 namespace soma::studies::gf13::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
@@ -105,18 +107,33 @@ void energies(Context& ctx) {
   }
   ctx.note("PUMA 560 (Armstrong et al. inertias, puma560_dynamics.json), τ = 0, g = 9.81, θ₀ = (0.2, −0.6, 0.8, 0.3, "
            "0.9, −0.4), θ̇₀ = 0.5 rad/s each, E₀ = " + toString(e0, 6) + " J, 10 s at h = 2 ms.");
-  // Bounds from the orders: over a fixed time the energy error scales like h⁴ (RK4) and h² (midpoint),
-  // so halving h must divide it by 16 and 4; we accept the order within ±1 (ratios [8, 32] and [2, 8]).
-  const double r1 = rk4Drift<double>(r, th0, thd0, h, 500), r2 = rk4Drift<double>(r, th0, thd0, h / 2, 1000);
-  const double m1 = midDrift<double>(r, th0, thd0, h, 500), m2 = midDrift<double>(r, th0, thd0, h / 2, 1000);
-  ctx.checkNear("RK4: energy error over 1 s at h = 2 ms / at h = 1 ms ≈ 2⁴ (order 4; accepted 8…32)", 20.0, r1 / r2, 12.0);
-  ctx.checkNear("implicit midpoint: energy error ratio h = 2 ms / 1 ms ≈ 2² (order 2; accepted 2…8)", 5.0, m1 / m2, 3.0);
+  // The orders, fitted: over a fixed time the energy error scales like h⁴ (RK4) and h² (midpoint).
+  // Fitted over h, h/2, h/4 (the least-squares slope of log|ΔE| against log h on three equally spaced
+  // points is log₂(e(h)/e(h/4))/2); the pairwise orders are in the note. The fitted order differs
+  // from the asymptotic one by the O(h) next term of the error expansion: the pairwise orders (RK4
+  // 3.973 for h, h/2 and 3.987 for h/2, h/4: the gap halves with h) put it at 0.02 here, so the
+  // margin is 0.05 (2.5×). Rounding (ε·E₀·steps ≈ 1e-11 J) is far below the smallest error fitted.
+  auto order = [](double eH, double eQuarter) { return std::log2(eH / eQuarter) / 2; };
+  const std::array<double, 3> rk = {rk4Drift<double>(r, th0, thd0, h, 500), rk4Drift<double>(r, th0, thd0, h / 2, 1000),
+                                    rk4Drift<double>(r, th0, thd0, h / 4, 2000)};
+  const std::array<double, 3> md = {midDrift<double>(r, th0, thd0, h, 500), midDrift<double>(r, th0, thd0, h / 2, 1000),
+                                    midDrift<double>(r, th0, thd0, h / 4, 2000)};
+  const double pRk = order(rk[0], rk[2]), pMid = order(md[0], md[2]);
+  const double kOrderMargin = 0.05;
+  ctx.checkNear("RK4: fitted order of the energy error over 1 s, h = 2, 1, 0.5 ms (order 4 ± 0.05)", 4.0, pRk, kOrderMargin);
+  ctx.checkNear("implicit midpoint: fitted order of the energy error, h = 2, 1, 0.5 ms (order 2 ± 0.05)", 2.0, pMid, kOrderMargin);
+  ctx.note("Energy errors over 1 s at h = 2, 1, 0.5 ms: RK4 " + toString(rk[0], 3) + ", " + toString(rk[1], 3) + ", " +
+           toString(rk[2], 3) + " J (pairwise orders " + toString(std::log2(rk[0] / rk[1]), 4) + ", " + toString(std::log2(rk[1] / rk[2]), 4) +
+           "); midpoint " + toString(md[0], 3) + ", " + toString(md[1], 3) + ", " + toString(md[2], 3) + " J (pairwise orders " +
+           toString(std::log2(md[0] / md[1]), 4) + ", " + toString(std::log2(md[1] / md[2]), 4) + ").");
   ctx.checkEqual("RK4: error over 10 s > 5 × error over the first second (secular drift)", "drifts", wr > 5 * wr1 ? "drifts" : "bounded");
   ctx.checkEqual("midpoint: error over 10 s ≤ 3 × error over the first second (no secular drift)", "bounded",
                  wm <= 3 * wm1 ? "bounded" : "drifts");
   ctx.note("RK4 over the first second " + toString(wr1, 3) + " J, over 10 s " + toString(wr, 3) + " J; midpoint over the "
            "first second " + toString(wm1, 3) + " J, over 10 s " + toString(wm, 3) + " J.");
-  ctx.checkPrintedFails("E_K + printed E_P = E_K + Σ g̃ᵀc̃_i = E_K − Σ m g z conserved (lines 8081–8085)", "3", wp, 1e-3);
+  // the noise of this computation is the integrator's: the corrected energy drifts by wr (RK4, 10 s)
+  ctx.checkPrintedFails("E_K + printed E_P = E_K + Σ g̃ᵀc̃_i = E_K − Σ m g z conserved (lines 8081–8085; bound: the corrected "
+                        "energy's RK4 drift over the same 10 s)", "3", wp, wr);
   // drift per scalar (RK4 and midpoint, 1 s at h = 2 ms)
   std::string table;
   const int n1 = 500;

@@ -119,7 +119,12 @@ void velocityTracking(Context& ctx) {
     sty += smp.t * y;
   }
   const double slope = (n * sty - st * sy) / (n * stt - st * st);
-  ctx.checkNear("fitted decay rate of |q̇₆ − s_d| (λ = 2)", 2.0, -slope, 0.02);
+  // Bound: the closed loop makes ė = −λe exactly; RK4 (h = 2 ms) multiplies e by the degree-4 Taylor
+  // polynomial of e^{−λh}, so the per-step rate is off by (λh)⁵/(120h) = λ⁵h⁴/120 = 4.3e-12 s⁻¹; the
+  // log-linear fit adds ε·|ln e|/t_span ≈ 1e-14. kRateBound allows 10× the RK4 term for the coupling of
+  // e to the rest of the plant's state (whose RK4 error enters through the law).
+  const double kRateBound = 10 * std::pow(c.lambda, 5) * std::pow(0.002, 4) / 120;
+  ctx.checkNear("fitted decay rate of |q̇₆ − s_d| (λ = 2; ≤ 10·λ⁵h⁴/120, RK4 at h = 2 ms)", 2.0, -slope, kRateBound);
   // decomposition q̇₆ = a_d s_d + Σ a_i z_i (z_i: a fixed complement): a_d(t) = 1 + (a_d(0) − 1)e^{−λt} (E15.6)
   DM Bm(6, 6);
   Bm.col(0) = c.sd;
@@ -154,7 +159,7 @@ void friction(Context& ctx) {
   const auto comp = simulateGeodesicControl<double>(s.robot, cf, mu, s.th0, s.td0, 0.002, 250, 250);
   const auto raw = simulateGeodesicControl<double>(s.robot, c, mu, s.th0, s.td0, 0.002, 250, 250);
   ctx.checkResidual("plant with friction μθ̇, law with +μ_iθ̇_i: |θ(0.5) − θ_frictionless(0.5)|", maxAbs(DV(comp.back().theta - ref.back().theta)), 1e-12);
-  ctx.checkPrintedFails("control: friction not compensated, |θ − θ_frictionless|", "— control", maxAbs(DV(raw.back().theta - ref.back().theta)), 1e-6);
+  ctx.checkPrintedFails("control: friction not compensated, |θ − θ_frictionless|", "— control", maxAbs(DV(raw.back().theta - ref.back().theta)), 1e-12);
 }
 
 /// The accelerating law as printed, term by term: τ_i = Σ_jk (B_ijk − A_ilΓ^l_ik)θ̇_jθ̇_k + C_i
@@ -230,7 +235,9 @@ void accelerating(Context& ctx) {
     auto Q = [&](double u) { return Mat4<double>(SE3Tangent<double>(V6(c.gamma * u * u / 2 * c.sd)).exp().matrix()); };
     return Mat4<double>((Q(t + h) - 2 * Q(t) + Q(t - h)) / (h * h));
   }();
-  ctx.checkPrintedFails("\"q̈₆ = e^{γt²s_d/2}\": |d²q₆/dt² − e^{γt²s_d/2}| at t = 1", "E15.4", (qdd - q).cwiseAbs().maxCoeff(), 1e-3);
+  // bound of the second difference at h = 1e-3: truncation h²/12·|q⁗| ≲ 1e-7 (|q⁗| ≲ 1 for γ = 0.7, t = 1) plus
+  // rounding 4ε|q|/h² ≈ 1e-9: 1e-6
+  ctx.checkPrintedFails("\"q̈₆ = e^{γt²s_d/2}\": |d²q₆/dt² − e^{γt²s_d/2}| at t = 1", "E15.4", (qdd - q).cwiseAbs().maxCoeff(), 1e-6);
 }
 
 void helixFigure(Context& ctx) {

@@ -374,7 +374,16 @@ void closedLoop(Context& ctx) {
   ctx.checkResidual("motion errors (turn, depth) follow the gain-predicted e(t) = c₁e^{−2t} + c₂e^{−8t} (max deviation, h = 0.005)", full.predDev, 1e-8);
   const std::size_t i1 = std::size_t(std::lround(2.0 / h)), i2 = std::size_t(std::lround(3.0 / h));
   const double rate = std::log(std::abs(full.ePhi[i2] / full.ePhi[i1])) / (full.t[i2] - full.t[i1]);
-  ctx.checkNear("decay rate of the turn error between t = 2 and 3 s (slow pole)", kPole1, rate, 1e-4);
+  // The fast pole still contributes: the gain-predicted rate is ln|ê(3)/ê(2)| (ê = c₁e^{−2t} + c₂e^{−8t}),
+  // off −2 by ≈ (c₂/c₁)e^{−12}. The simulated rate differs from it by the motion's deviation from ê
+  // (predDev, checked above): |Δrate| ≤ predDev·(1/|ê(2)| + 1/|ê(3)|).
+  const double ePred2 = predicted(kE0[0], kEd0[0], full.t[i1]), ePred3 = predicted(kE0[0], kEd0[0], full.t[i2]);
+  const double ratePred = std::log(std::abs(ePred3 / ePred2)) / (full.t[i2] - full.t[i1]);
+  ctx.checkNear("decay rate of the turn error between t = 2 and 3 s = the gain-predicted ln|ê(3)/ê(2)| (≤ predDev·(1/|ê(2)| + 1/|ê(3)|))",
+                ratePred, rate, full.predDev * (1 / std::abs(ePred2) + 1 / std::abs(ePred3)));
+  ctx.checkNear("… which is the slow pole −2 up to the fast pole's (c₂/c₁)e^{−12}", kPole1, ratePred,
+                2 * std::abs((kEd0[0] - kPole1 * kE0[0]) / (kPole2 - kPole1) / (kE0[0] - (kEd0[0] - kPole1 * kE0[0]) / (kPole2 - kPole1))) *
+                    std::exp((kPole2 - kPole1) * 2.0));
   {  // the bound from the gains: |e(t)| ≤ |c₁|e^{−2t} + |c₂|e^{−8t}, c₂ = (ė₀ + 2e₀)/(−6), c₁ = e₀ − c₂ (turn)
     const double c2 = (kEd0[0] - kPole1 * kE0[0]) / (kPole2 - kPole1), c1 = kE0[0] - c2;
     const double bound = std::abs(c1) * std::exp(kPole1 * kT) + std::abs(c2) * std::exp(kPole2 * kT);
@@ -411,7 +420,13 @@ void closedLoop(Context& ctx) {
   // 5. energy: work of controller + gravity = ΔE_K, error O(h⁴)
   const Run e1 = simulate(peg, 0.02, true), e2 = simulate(peg, 0.01, true);
   ctx.checkResidual("|ΔE_K − ∫(W + G)ᵀV dt| with h = 0.005 (J; RKMK4 + Simpson)", full.energyErr, 1e-7);
-  ctx.checkNear("energy error ratio h = 0.02 : h = 0.01 (order 4 ⇒ 16)", 16.0, e1.energyErr / e2.energyErr, 4.0);
+  // the order fitted over h = 0.02, 0.01, 0.005: log₂(e(h)/e(h/4))/2; the O(h) next term of the error
+  // expansion shifts it (pairwise orders 3.979, 3.993: 0.014 here); margin 0.05 (papers/checks.md)
+  ctx.checkNear("fitted order of the energy error, h = 0.02, 0.01, 0.005 (RKMK4 + Simpson: 4 ± 0.05)", 4.0,
+                std::log2(e1.energyErr / full.energyErr) / 2, 0.05);
+  ctx.note("Energy error at h = 0.02, 0.01, 0.005: " + toString(e1.energyErr, 3) + ", " + toString(e2.energyErr, 3) + ", " +
+           toString(full.energyErr, 3) + " J; pairwise orders " + toString(std::log2(e1.energyErr / e2.energyErr), 4) + ", " +
+           toString(std::log2(e2.energyErr / full.energyErr), 4) + ".");
   sphereContact(ctx);
   ctx.note("Peg 1.2 kg, centre of mass (0.05, −0.03, 0.12) m, hole axis = z (vertical), g = 9.81; gains K_p = 16, K_d = 10. Max drift " +
            toString(full.drift, 2) + "; motion vs prediction " + toString(full.predDev, 2) + "; late rate " + toString(rate, 8) +

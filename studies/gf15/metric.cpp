@@ -277,7 +277,7 @@ void christoffel(Context& ctx) {
                       return m;
                     }(),
                     1e-12);
-  ctx.checkPrintedFails("\"the Christoffel symbol must be anti-symmetric\": Γ^i_jk = ½W_i([s_j, s_k]) for all j, k", "E15.1", errP / scale, 1e-3);
+  ctx.checkPrintedFails("\"the Christoffel symbol must be anti-symmetric\": Γ^i_jk = ½W_i([s_j, s_k]) for all j, k", "E15.1", errP / scale, 1e-12);
   ctx.note("Max |Γ| = " + toString(scale, 4) + ". Anti-symmetry holds only in the Lie-algebra (non-holonomic) frame; "
            "in joint coordinates a torsion-free connection has symmetric symbols, and the anti-symmetric part contracts to zero "
            "in Γ^i_jkθ̇_jθ̇_k.");

@@ -188,16 +188,17 @@ void tradeoff(Context& ctx) {
                        std::to_string(r.poses) + " poses)",
                    (long long)r.poses, (long long)std::llround(r.completeness * double(r.poses)));
   }
-  ctx.checkResidual("algebraic double: worst residual over " + std::to_string(nDouble) + " poses",
-                    rows[0].worst, 4096 * toDouble(Tolerance<double>::identity()));
-  ctx.checkResidual("algebraic long double: worst residual", rows[2].worst,
-                    4096 * toDouble(Tolerance<long double>::identity()));
-  ctx.checkResidual("algebraic float128: worst residual", rows[3].worst,
-                    4096 * toDouble(Tolerance<__float128>::identity()));
-  ctx.checkResidual("algebraic mpfr: worst residual", rows[4].worst,
-                    4096 * toDouble(Tolerance<mpfr::mpreal>::identity()));
-  ctx.checkResidual("algebraic float: worst residual (float polish)", rows[1].worst,
-                    4096 * toDouble(Tolerance<float>::identity()));
+  // Bound on the polished residual max(|R(q) − R*|, |t(q) − t*|/L): forward kinematics chains 6
+  // link transforms, each entry of a product a 3-term dot product of unit-bounded factors plus the
+  // sin/cos of the joint (≤ 4ε per link), so one evaluation carries ≤ 6·4 = 24ε; the polished posture
+  // is itself rounded (Newton stops at the evaluation's noise), doubling it: 48ε; k = 64 ulps.
+  auto bound = [](auto tag) { return 64 * toDouble(Tolerance<std::decay_t<decltype(tag)>>::epsilon()); };
+  ctx.checkResidual("algebraic double: worst residual over " + std::to_string(nDouble) + " poses (≤ 64 ε: 6 links × 4ε, ×2)",
+                    rows[0].worst, bound(0.0));
+  ctx.checkResidual("algebraic long double: worst residual (≤ 64 ε)", rows[2].worst, bound(0.0L));
+  ctx.checkResidual("algebraic float128: worst residual (≤ 64 ε)", rows[3].worst, bound(__float128(0)));
+  ctx.checkResidual("algebraic mpfr: worst residual (≤ 64 ε)", rows[4].worst, bound(mpfr::mpreal(0)));
+  ctx.checkResidual("algebraic float: worst residual (float polish; ≤ 64 ε)", rows[1].worst, bound(0.0f));
   // A numerical posture the algebraic method did not return would falsify its completeness.
   ctx.checkEqual("ceres postures outside the algebraic set", 0, (long long)outCeres);
   ctx.checkEqual("nlopt postures outside the algebraic set", 0, (long long)outNlopt);

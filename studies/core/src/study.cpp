@@ -1,9 +1,16 @@
 #include "soma/studies/study.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 
 namespace soma::studies {
+
+std::string missRatioText(double ratio) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", ratio);
+  return buf;
+}
 
 Context::Context(ScalarKind scalar, std::filesystem::path reportDir, bool makeFigures)
     : scalar_(scalar), reportDir_(std::move(reportDir)), makeFigures_(makeFigures),
