@@ -73,14 +73,24 @@ template <class S> void representationAxioms(Context& c) {
     eq = maxOf(eq, maxAbs(Mat6<S>(M * a.adjoint() * Mi * (M * b.adjoint() * Mi) - M * (a * b).adjoint() * Mi)));
   }
   c.checkResidual("equivalent representation M Ad_g M⁻¹ satisfies (R1) (M = 3I + random)", eq, S(64) * tol);
-  // SU(2) → SO(3): the unit quaternions q and −q (SU(2) matrices differing by −1) give the same
-  // rotation, so the 2×2 representation is not one of SO(3).
+  // SU(2) → SO(3): the 2×2 matrices U(q) = wI − i(xσ_x + yσ_y + zσ_z) of unit quaternions are a
+  // representation of SU(2) (U(q₁)U(q₂) = U(q₁q₂)), but q and −q (U and −U) give the same rotation,
+  // so U is not a representation of SO(3).
+  auto U = [](const Quat<S>& q) {
+    CMat<S> u(2, 2);
+    u << C<S>(q.w(), -q.z()), C<S>(-q.y(), -q.x()), C<S>(q.y(), -q.x()), C<S>(q.w(), q.z());
+    return u;
+  };
+  S su2(0);
+  for (int n = 0; n < 20; ++n) {
+    const Quat<S> q1 = SO3<S>::Random(g).quaternion(), q2 = SO3<S>::Random(g).quaternion();
+    su2 = maxOf(su2, maxAbs(CMat<S>(U(q1) * U(q2) - U(Quat<S>(q1 * q2)))));
+  }
+  c.checkResidual("U(q₁)U(q₂) = U(q₁q₂): the 2×2 representation of SU(2) (20 random pairs)", su2, S(4) * tol);
   const Quat<S> q = SO3<S>::Random(g).quaternion();
   const Quat<S> mq(-q.w(), -q.x(), -q.y(), -q.z());
-  c.checkResidual("q and −q give the same rotation matrix (the kernel {±1} of SU(2) → SO(3))",
+  c.checkResidual("q and −q (U and −U) give the same rotation matrix: the kernel {±1} of SU(2) → SO(3)",
                   maxAbs(Mat3<S>(SO3<S>::fromQuaternion(q).matrix() - SO3<S>::fromQuaternion(mq).matrix())), tol);
-  c.checkNear("their SU(2) matrices differ by 2 in the largest entry: not a representation of SO(3)", S(2) * maxAbs(q.coeffs()),
-              maxAbs(Vec4<S>(q.coeffs() - mq.coeffs())), S(0));
   c.note("(R3) prints R_q for R_g (OCR); linearity holds because R_g are matrices.");
 }
 SOMA_STUDY_SCALAR("GF-7.1-representation-axioms", "Representation axioms (R1)–(R3) for P_g and Ad_g; Lie representations; equivalence",
@@ -112,8 +122,14 @@ template <class S> void dualSumTensor(Context& c) {
   c.checkResidual("(L*_X f)(v) + f(L_X v) = 0", lev, tol);
   c.checkResidual("L* = −Lᵀ is a representation: [L*_X, L*_Y] = L*_[X,Y]", lbr, tol);
   const rep::So3Irrep<S> l1 = rep::so3Irrep<S>(2), lh = rep::so3Irrep<S>(1), l32 = rep::so3Irrep<S>(3);
-  c.checkResidual("weights of the dual L*: −Hᵀ = −H (the eigenvalues change sign; L_j* ≅ L_j)",
-                  maxAbs(Matrix<S>(rep::dualOfAlgebra(l32.H) + l32.H)), S(0));
+  // The dual of L_{3/2}: (−Hᵀ, −J₊ᵀ, −J₋ᵀ) keeps the relations; its weights are the negatives,
+  // which is the same set again: L_j* ≅ L_j.
+  const Matrix<S> dh = rep::dualOfAlgebra(l32.H), dp = rep::dualOfAlgebra(l32.Jp), dm = rep::dualOfAlgebra(l32.Jm);
+  c.checkResidual("L_{3/2}*: [H*, J₊*] = J₊*, [J₊*, J₋*] = −2H* with L* = −Lᵀ (exact)",
+                  maxOf(maxAbs(Matrix<S>(comm(dh, dp) - dp)), maxAbs(Matrix<S>(comm(dp, dm) + S(2) * dh))), S(0));
+  c.checkResidual("eigenvalues of L*(J₃) are those of L(J₃) with opposite sign (exact)",
+                  maxAbs(Matrix<S>(dh.diagonal() + l32.H.diagonal())), S(0));
+  c.checkEqual("L_{3/2}* ≅ L_{3/2} (weights)", "L3/2", rep::so3Decomposition<S>(dh) == std::map<int, int>{{3, 1}} ? "L3/2" : "other");
   // Direct sum: block diagonal, eigenvalues together.
   const Matrix<S> hs = rep::directSum(l1.H, lh.H), ps = rep::directSum(l1.Jp, lh.Jp), ms = rep::directSum(l1.Jm, lh.Jm);
   c.checkResidual("L₁ ⊕ L_½ keeps [J₊, J₋] = 2iJ₃ (real form −2H; exact)", maxAbs(Matrix<S>(comm(ps, ms) + S(2) * hs)), S(0));
