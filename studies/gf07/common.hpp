@@ -1,8 +1,10 @@
 #pragma once
 // Helpers shared by the studies of GF chapter 7 (gf07/*.cpp): complex matrices (the book works
 // over ℂ: J± = Y ± iX), their max-norm, nullities through the real form [[Re, −Im], [Im, Re]]
-// (so every rank decision is a real FullPivLU in the working scalar), fixed-seed random draws.
+// (so every rank decision is a real FullPivLU in the working scalar); the random draws are
+// chapter 4's (gf04/common.hpp).
 // Nothing here is soma library code: the library's representations are in algebra/rep/.
+#include "gf04/common.hpp"
 #include "soma/algebra/lie_algebra.hpp"
 #include "soma/algebra/rep/direct_sum.hpp"
 #include "soma/algebra/rep/dual_angle_axis.hpp"
@@ -14,6 +16,7 @@
 #include "soma/algebra/rep/symmetric_power.hpp"
 #include "soma/algebra/screw_bracket.hpp"
 #include "soma/algebra/tolerance.hpp"
+#include "soma/geometry/riemannian/invariant_metric.hpp"
 #include "soma/studies/study.hpp"
 
 #include <Eigen/LU>
@@ -26,33 +29,23 @@ namespace soma::studies::gf07 {
 
 inline constexpr const char* kChapter = "GF 7 — Representation theory";
 
+// Fixed-seed draws and the NaN-propagating max of chapter 4's helpers.
+using gf04::maxOf;
+using gf04::randomUnit;
+using gf04::randomVec;
+using gf04::rng;
+using gf04::uniform;
+using rep::Matrix;
 using std::abs;
 using std::atan2;
 using std::cos;
 using std::pow;
 using std::sin;
 using std::sqrt;
-using rep::Matrix;
 
 template <class S> using C = std::complex<S>;
 template <class S> using CMat = Matrix<std::complex<S>>;
 template <class S> using CVec = Eigen::Matrix<std::complex<S>, Eigen::Dynamic, 1>;
-
-inline std::mt19937_64 rng(std::uint64_t seed) { return std::mt19937_64(seed); }
-template <class S> S uniform(std::mt19937_64& g, double lo = -1, double hi = 1) {
-  return scalarCast<S>(std::uniform_real_distribution<double>(lo, hi)(g));
-}
-template <class S, int N> Eigen::Matrix<S, N, 1> randomVec(std::mt19937_64& g) {
-  Eigen::Matrix<S, N, 1> v;
-  for (int i = 0; i < N; ++i) v(i) = uniform<S>(g);
-  return v;
-}
-template <class S> Vec3<S> randomUnit(std::mt19937_64& g) {
-  Vec3<S> v;
-  do v = randomVec<S, 3>(g);
-  while (v.squaredNorm() < S(1) / S(10));
-  return v / sqrt(v.squaredNorm());
-}
 
 /// |x| for real x, |Re z| + |Im z| (≥ |z|, within √2) for complex z: no complex abs needed.
 template <class S> S absOf(const S& x) { return abs(x); }
@@ -71,11 +64,6 @@ template <class D> typename RealOf<typename D::Scalar>::type maxAbs(const Eigen:
       if (a > r) r = a;
     }
   return r;
-}
-template <class S> S maxOf(const S& a, const S& b) {
-  if (!isFinite(a)) return a;
-  if (!isFinite(b)) return b;
-  return a < b ? b : a;
 }
 template <class M> M comm(const M& a, const M& b) { return M(a * b - b * a); }
 
@@ -143,5 +131,10 @@ template <class S> Ladder<S> ladderOf(const Matrix<S>& X, const Matrix<S>& Y, co
 }
 
 template <class S> std::string str(const S& x, int digits = 3) { return toString(x, digits); }
+
+/// GF §6.4's invariant forms on se(3): Q₀ = [[0, I], [I, 0]] (the Klein form) and
+/// Q_∞ = [[−2I, 0], [0, 0]] (the book's normalisation; soma's killingMatrixQinf is diag(I, 0)).
+template <class S> Mat6<S> bookQ0() { return reciprocalProductMatrix<S>(); }
+template <class S> Mat6<S> bookQinf() { return Mat6<S>(S(-2) * killingMatrixQinf<S>()); }
 
 }  // namespace soma::studies::gf07

@@ -244,10 +244,7 @@ template <class S> void formsAndGrassmannians(Context& c) {
   for (const auto& m : co) restricted.push_back(rep::restrictToSubspace(rep::algebraTensor(m, m), basis));
   c.checkEqual("invariant symmetric bilinear forms on se(3): dim of the trivial part of Sym²(ad*)", 2,
                nullity<S>(stack<S>(restricted)));
-  Mat6<S> Q0 = Mat6<S>::Zero(), Qi = Mat6<S>::Zero();
-  Q0.template topRightCorner<3, 3>() = Mat3<S>::Identity();
-  Q0.template bottomLeftCorner<3, 3>() = Mat3<S>::Identity();
-  Qi.template topLeftCorner<3, 3>() = -S(2) * Mat3<S>::Identity();
+  const Mat6<S> Q0 = bookQ0<S>(), Qi = bookQinf<S>();
   S fixed(0);
   for (int n = 0; n < 10; ++n) {
     const Mat6<S> Ad = SE3<S>::Random(g).adjoint();

@@ -165,9 +165,7 @@ template <class S> void coadjointStudy(Context& c) {
   c.checkPrintedFails("ω_m ↦ b_m, v_m ↦ −a_m intertwines ad and ad*", "E7.7 (new)", printed.first, tol);
   const auto fixed = intertwinerDefect({ch.b[0], Row(-ch.b[1]), ch.b[2], ch.a[0], Row(-ch.a[1]), ch.a[2]});
   c.checkResidual("corrected: ω_m ↦ (−1)^m b_m, v_m ↦ (−1)^m a_m intertwines ad and ad*", fixed.first, tol);
-  Mat6<S> Q0 = Mat6<S>::Zero();
-  Q0.template topRightCorner<3, 3>() = Mat3<S>::Identity();
-  Q0.template bottomLeftCorner<3, 3>() = Mat3<S>::Identity();
+  const Mat6<S> Q0 = bookQ0<S>();
   c.checkResidual("… and it is ¼ Q₀ (the Klein form of GF §6.4) in 6-vector coordinates",
                   maxAbs(CMat<S>(fixed.second - toComplex<S>(Mat6<S>(Q0 / S(4))))), tol);
   S q0(0);

@@ -189,10 +189,7 @@ template <class S> void invariant3Tensors(Context& c) {
   }
   c.checkResidual("Q_∞ and Q₀ are se(3)-invariant (coadjoint ⊗3 of every generator kills them; exact)", inv, S(0));
   // (Q)_ijk s_u s_v s_w = s_uᵀ Q [s_v, s_w] with Q_∞ = diag(−2I, 0), Q₀ = [[0, I], [I, 0]] of GF §6.4.
-  Mat6<S> qi = Mat6<S>::Zero(), q0 = Mat6<S>::Zero();
-  qi.template topLeftCorner<3, 3>() = -S(2) * Mat3<S>::Identity();
-  q0.template topRightCorner<3, 3>() = Mat3<S>::Identity();
-  q0.template bottomLeftCorner<3, 3>() = Mat3<S>::Identity();
+  const Mat6<S> qi = bookQinf<S>(), q0 = bookQ0<S>();
   S ci(0), c0(0);
   for (int n = 0; n < 20; ++n) {
     const Vec6<S> su = randomVec<S, 6>(g), sv = randomVec<S, 6>(g), sw = randomVec<S, 6>(g);

@@ -49,26 +49,6 @@ template <class T> Matrix<T> exteriorPowerBasis(int d, int n) {
 
 /// The antisymmetriser (1/n!) Σ_σ sign(σ) σ on V^{⊗n}: the orthogonal projector onto ⋀^n V.
 // GF §7.2, GF-7.2-dual-sum-tensor
-template <class T> Matrix<T> antisymmetriser(int d, int n) {
-  const long long size = detail::tensorPowerSize(d, n);
-  std::vector<int> perm(static_cast<std::size_t>(n));
-  for (int k = 0; k < n; ++k) perm[std::size_t(k)] = k;
-  Matrix<T> p = Matrix<T>::Zero(size, size);
-  long long count = 0;
-  do {
-    ++count;
-    int sign = 1;  // sign of perm by counting inversions
-    for (int a = 0; a < n; ++a)
-      for (int b = a + 1; b < n; ++b)
-        if (perm[std::size_t(a)] > perm[std::size_t(b)]) sign = -sign;
-    for (long long t = 0; t < size; ++t) {
-      const std::vector<int> idx = detail::tensorIndexDigits(t, d, n);
-      long long u = 0;
-      for (int k = 0; k < n; ++k) u = u * d + idx[std::size_t(perm[std::size_t(k)])];
-      p(u, t) += T(double(sign));
-    }
-  } while (std::next_permutation(perm.begin(), perm.end()));
-  return p / T(double(count));
-}
+template <class T> Matrix<T> antisymmetriser(int d, int n) { return detail::permutationAverage<T>(d, n, true); }
 
 }  // namespace soma::rep

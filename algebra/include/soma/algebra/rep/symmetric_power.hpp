@@ -43,22 +43,6 @@ template <class T> Matrix<T> symmetricPowerBasis(int d, int n) {
 /// The symmetriser (1/n!) Σ_σ σ on V^{⊗n}: the orthogonal projector onto Sym^n V (rank
 /// C(n + d − 1, n)), built by averaging over the n! permutations of the factors.
 // GF §7.2, GF-7.2-dual-sum-tensor
-template <class T> Matrix<T> symmetriser(int d, int n) {
-  const long long size = detail::tensorPowerSize(d, n);
-  std::vector<int> perm(static_cast<std::size_t>(n));
-  for (int k = 0; k < n; ++k) perm[std::size_t(k)] = k;
-  Matrix<T> p = Matrix<T>::Zero(size, size);
-  long long count = 0;
-  do {
-    ++count;
-    for (long long t = 0; t < size; ++t) {
-      const std::vector<int> idx = detail::tensorIndexDigits(t, d, n);
-      long long u = 0;
-      for (int k = 0; k < n; ++k) u = u * d + idx[std::size_t(perm[std::size_t(k)])];
-      p(u, t) += T(1);
-    }
-  } while (std::next_permutation(perm.begin(), perm.end()));
-  return p / T(double(count));
-}
+template <class T> Matrix<T> symmetriser(int d, int n) { return detail::permutationAverage<T>(d, n, false); }
 
 }  // namespace soma::rep

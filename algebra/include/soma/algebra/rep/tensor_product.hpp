@@ -7,6 +7,7 @@
 
 #include <unsupported/Eigen/KroneckerProduct>
 
+#include <algorithm>
 #include <vector>
 
 namespace soma::rep {
@@ -54,5 +55,29 @@ inline long long tensorPowerSize(int d, int n) {
   long long size = 1;
   for (int k = 0; k < n; ++k) size *= d;
   return size;
+}
+/// (1/n!) Σ_σ χ(σ) σ on V^{⊗n} (σ permutes the factors; χ = 1 or the sign of σ): the symmetriser
+/// and the antisymmetriser (symmetric_power.hpp, exterior_power.hpp).
+template <class T> Matrix<T> permutationAverage(int d, int n, bool signed_) {
+  const long long size = tensorPowerSize(d, n);
+  std::vector<int> perm(static_cast<std::size_t>(n));
+  for (int k = 0; k < n; ++k) perm[std::size_t(k)] = k;
+  Matrix<T> p = Matrix<T>::Zero(size, size);
+  long long count = 0;
+  do {
+    ++count;
+    int sign = 1;  // the sign of perm by counting inversions
+    if (signed_)
+      for (int a = 0; a < n; ++a)
+        for (int b = a + 1; b < n; ++b)
+          if (perm[std::size_t(a)] > perm[std::size_t(b)]) sign = -sign;
+    for (long long t = 0; t < size; ++t) {
+      const std::vector<int> idx = tensorIndexDigits(t, d, n);
+      long long u = 0;
+      for (int k = 0; k < n; ++k) u = u * d + idx[std::size_t(perm[std::size_t(k)])];
+      p(u, t) += T(double(sign));
+    }
+  } while (std::next_permutation(perm.begin(), perm.end()));
+  return p / T(double(count));
 }
 }  // namespace soma::rep::detail
