@@ -168,6 +168,11 @@ template <class S> void coadjointStudy(Context& c) {
   const Mat6<S> Q0 = bookQ0<S>();
   c.checkResidual("… and it is ¼ Q₀ (the Klein form of GF §6.4) in 6-vector coordinates",
                   maxAbs(CMat<S>(fixed.second - toComplex<S>(Mat6<S>(Q0 / S(4))))), tol);
+  // All intertwiners ad → ad*: X with X ad(G) + ad(G)ᵀX = 0, i.e. (Gᵀ ⊗ 1 + 1 ⊗ Gᵀ) vec X = 0 (vec by rows).
+  std::vector<Matrix<S>> ops;
+  for (const auto& G : ad) ops.push_back(rep::algebraTensor(Matrix<S>(G.transpose()), Matrix<S>(G.transpose())));
+  c.checkEqual("the intertwiners ad → ad* (invariant bilinear forms) form a 2-dimensional space (Q₀, Q_∞)", 2,
+               nullity<S>(stack<S>(ops)));
   S q0(0);
   for (const auto& G : ad) q0 = maxOf(q0, maxAbs(Matrix<S>(Q0 * G + G.transpose() * Q0)));
   c.checkResidual("Q₀ ad(X) = −ad(X)ᵀ Q₀ for every generator: adjoint ≅ coadjoint (exact)", q0, S(0));
