@@ -1,6 +1,7 @@
 // Studies of GF chapter 7, §7.3–7.4: the ladder basis of so(3), its irreducible representations
 // L_j, and their plethysm (L₁ ⊗ L₁, Clebsch–Gordan, Sym^n L_½, ⋀² L₁).
 #include "gf07/common.hpp"
+#include "soma/render/svg.hpp"
 
 namespace soma::studies::gf07::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
@@ -231,6 +232,39 @@ template <class S> void clebschGordan(Context& c) {
   const rep::So3Irrep<S> a = rep::so3Irrep<S>(1), b = rep::so3Irrep<S>(4);
   const auto dec = rep::so3Decomposition<S>(rep::algebraTensor(a.H, b.H));
   c.checkEqual("L_½ ⊗ L₂: lowest summand 2k = 2|m − n| = 3", 3, dec.begin()->first);
+  // Figure: the book's grid argument for L₃ ⊗ L₁ — the multiplicity of each J₃ eigenvalue iw
+  // (measured: nullity of H − w) and the summands L₄, L₃, L₂ stacked as bars over −k … k.
+  if (c.makeFigures()) {
+    const rep::So3Irrep<S> l3 = rep::so3Irrep<S>(6), l1 = rep::so3Irrep<S>(2);
+    const Matrix<S> H = rep::algebraTensor(l3.H, l1.H);
+    std::vector<double> ws, mult;
+    for (int w = -4; w <= 4; ++w) {
+      ws.push_back(w);
+      mult.push_back(nullity<S>(Matrix<S>(H - S(w) * Matrix<S>::Identity(H.rows(), H.cols()))));
+    }
+    render::Plot plot;
+    plot.title = "GF §7.4: weights of L₃ ⊗ L₁ = L₄ ⊕ L₃ ⊕ L₂";
+    plot.x.label = "w (J₃ eigenvalue iw)";
+    plot.y.label = "multiplicity";
+    plot.y.min = 0, plot.y.max = 4.5;
+    const render::Color colours[3] = {render::palette::blue, render::palette::orange, render::palette::bluishGreen};
+    int layer = 0;
+    for (int twoK : {8, 6, 4}) {  // L₄ at the bottom, then L₃, L₂
+      const double k = twoK / 2.0, y = layer + 0.5;
+      const std::string sub[5] = {"₀", "₁", "₂", "₃", "₄"}, kk = std::to_string(twoK / 2);
+      auto& s = plot.add("L" + sub[twoK / 2] + " (weights −" + kk + " … " + kk + ")", {-k, k}, {y, y}, colours[layer]);
+      s.width = 10;
+      ++layer;
+    }
+    auto& m = plot.add("measured multiplicity (nullity of H − w)", ws, mult, render::palette::black);
+    m.markers = true;
+    m.markerRadius = 7;
+    render::renderPlotPngAndSvg(plot, c.figurePath("GF-7.4-clebsch-gordan.png"), 1100, 700);
+    c.figure("GF-7.4-clebsch-gordan.png",
+             "The grid argument of §7.4 for m = 3, n = 1: the 21 weights of L₃ ⊗ L₁ have multiplicities 1, 2, 3, 3, 3, 3, 3, "
+             "2, 1 (black, measured); peeling off strings from the top leaves L₄, L₃, L₂ (bars, one per summand, each over "
+             "its weights −k … k), so the plateau of 2n + 1 = 3 ends at |w| = m − n = 2.");
+  }
 }
 SOMA_STUDY_SCALAR("GF-7.4-clebsch-gordan", "L_m ⊗ L_n = L_{m+n} ⊕ … ⊕ L_{|m−n|} by Casimir multiplicities (erratum E7.1)",
                   "GF §7.4", clebschGordan);

@@ -60,6 +60,8 @@ template <class S> DualNumber<S> dualKillingForm(const SE3Tangent<S>& s1, const 
 // GF §7.5, GF-7.5-casimirs-and-pitch (corrected, erratum E7.6: not Tr(X P_t X)/Tr(X J_t X))
 template <class S> S pitchFromInvariantForms(const SE3Tangent<S>& s) {
   const DualNumber<S> k = dualKillingForm(s, s);
+  // k.re = −2ω·ω is 0 exactly when ω = 0 (infinite pitch); a tiny ω has a large, finite pitch
+  // (as screwPitch in geometry/lines), so this is the definition, not a threshold.
   if (k.re == S(0)) {
     if (s.lin().squaredNorm() == S(0)) throw InvalidInput("pitchFromInvariantForms: the zero twist has no pitch");
     return std::numeric_limits<S>::infinity();
