@@ -174,6 +174,18 @@ template <class S> void l1xl1(Context& c) {
   c.checkPrintedFails("L₀ = u₁⊗v₋₁ + u₀⊗v₀ + u₋₁⊗v₁ is killed by J₋", "E7.2", maxAbs(CVec<S>(Tm * p0)), S(0));
   c.checkResidual("corrected u₁⊗v₋₁ − u₀⊗v₀ + u₋₁⊗v₁: killed by J₃, J₊, J₋ (exact)",
                   maxOf(maxOf(maxAbs(CVec<S>(T3 * q0)), maxAbs(CVec<S>(Tp * q0))), maxAbs(CVec<S>(Tm * q0))), S(0));
+  // The same in the library's own L₁ (e_k = J₋ᵏe₀, the book's normalisation; real form H, J±).
+  {
+    const Matrix<S> H = rep::algebraTensor(l1.H, l1.H), P = rep::algebraTensor(l1.Jp, l1.Jp), M = rep::algebraTensor(l1.Jm, l1.Jm);
+    Eigen::Matrix<S, Eigen::Dynamic, 1> lib0 = Eigen::Matrix<S, Eigen::Dynamic, 1>::Zero(9), libP = lib0;
+    lib0(2) = S(1), lib0(4) = S(-1), lib0(6) = S(1);  // e₀⊗e₂ − e₁⊗e₁ + e₂⊗e₀
+    libP(2) = S(1), libP(4) = S(1), libP(6) = S(1);
+    c.checkResidual("library's L₁: e₀⊗e₂ − e₁⊗e₁ + e₂⊗e₀ is killed by H, J₊, J₋ (exact)",
+                    maxOf(maxOf(maxAbs(Eigen::Matrix<S, Eigen::Dynamic, 1>(H * lib0)), maxAbs(Eigen::Matrix<S, Eigen::Dynamic, 1>(P * lib0))),
+                          maxAbs(Eigen::Matrix<S, Eigen::Dynamic, 1>(M * lib0))), S(0));
+    c.checkPrintedFails("library's L₁: e₀⊗e₂ + e₁⊗e₁ + e₂⊗e₀ is killed by J₋", "E7.2",
+                        maxAbs(Eigen::Matrix<S, Eigen::Dynamic, 1>(M * libP)), S(0));
+  }
   CVec<S> dotTensor = CVec<S>::Zero(9);
   for (int a = 0; a < 3; ++a) dotTensor(4 * a) = C<S>(S(1));  // Σ e_a ⊗ e_a: the scalar product
   const C<S> scale = q0(0);
