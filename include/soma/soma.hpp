@@ -19,6 +19,17 @@
 #include <soma/algebra/polynomial.hpp>
 #include <soma/algebra/quaternion.hpp>
 #include <soma/algebra/reciprocal_product.hpp>
+#include <soma/algebra/rep/direct_sum.hpp>
+#include <soma/algebra/rep/dual_angle_axis.hpp>
+#include <soma/algebra/rep/dual_representation.hpp>
+#include <soma/algebra/rep/exterior_power.hpp>
+#include <soma/algebra/rep/se3_casimirs.hpp>
+#include <soma/algebra/rep/se3_representations.hpp>
+#include <soma/algebra/rep/so3_irrep.hpp>
+#include <soma/algebra/rep/subrepresentation.hpp>
+#include <soma/algebra/rep/symmetric_power.hpp>
+#include <soma/algebra/rep/tensor_product.hpp>
+#include <soma/algebra/rep/transference.hpp>
 #include <soma/algebra/safe_norm.hpp>
 #include <soma/algebra/screw_bracket.hpp>
 #include <soma/algebra/screw.hpp>
