@@ -29,11 +29,16 @@ echo "soma benchmarks: compiled in $(( $(date +%s) - tests_done )) s"
 # 86 steps), so about 9.5 min of wall on a clean 2-core machine; the corpus replays and the 58
 # sanitized io tests 19 s wall (6 s CPU), the fuzzing 7 x 20 s / 2 = 70 s: about 11 min in all, inside
 # the ~12 min budget. Without SOMA_INSTANTIATE_DOUBLE_ONLY the build needed 96 objects instead of 69
-# (the dynamics ladder alone is 28 TUs); test_algebra, test_geometry_lines and the CLI contract tests
-# do not fit (the CLI links every study).
+# (the dynamics ladder alone is 28 TUs).
+# The sanitized tests are the readers' (io), algebra's and the line geometry's (2026-12-04, this
+# 2-core machine at load 5–8, `time`: test_algebra and test_geometry_lines built sanitized in 325 s of
+# CPU, 587 s of wall; their 387 tests ran in 122 s of wall with -j2, 0 reports). Not yet: the serial
+# tests (they need the general-6R and closed-form instantiations of every scalar, which this preset
+# builds for double only: test_geometry_serial does not link) and the CLI contract tests (a sanitized
+# `soma` built with SOMA_CLI_STUDIES=OFF, without the 400 studies): CI's 45 minutes.
 if [ "${SOMA_SANITIZE:-1}" != 0 ]; then
   fuzz_start=$(date +%s)
-  sanitize_tests=${SOMA_SANITIZE_TESTS:-io}
+  sanitize_tests=${SOMA_SANITIZE_TESTS:-io algebra geometry/lines}
   targets=(soma_fuzz)
   for area in $sanitize_tests; do targets+=("test_${area//\//_}"); done
   cmake --preset fuzz >/dev/null

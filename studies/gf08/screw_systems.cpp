@@ -399,7 +399,7 @@ void generalities3(Context& c) {
     }
     c.checkResidual("20 concurrent triples with random directions satisfy s₁ᵀQ₀[s₂, s₃] = 0", printedCond, kTol);
     c.checkPrintedFails("… yet are not mutually orthogonal (smallest largest |ωᵢ·ωⱼ|): the printed condition is not sufficient",
-                        "ch. 8 minor 4803", orthDefect, 1e-3);
+                        "ch. 8 minor 4803", orthDefect, kTol);  // the corrected condition's rounding bound
     c.checkResidual("orthogonal concurrent triples satisfy sᵢᵀQ₀sⱼ = sᵢᵀQ∞sⱼ = 0 (the corrected condition) and the printed one",
                     corrOrth, kTol);
     c.recordIn("… and the random concurrent triples violate the corrected condition (smallest largest |sᵢᵀQsⱼ|)", "> 1e-3",
