@@ -963,10 +963,13 @@ template <class S> StewartForwardSolution<S> solveStewartForward(const StewartPl
   // singular configuration): re-solve in a wider scalar and say so — float in double (which itself
   // goes on to float128 if still short), double and long double in float128 with fine tracking
   // (10⁹ times tighter).
-  const auto escalate = [&]<class W>(bool fine) {
+  const bool floatFailed = std::is_same_v<S, float> && out.paths_failed > 0;
+  const auto escalate = [&]<class W>(bool fine, int paths) {
     const StewartPlatform<W> Q = P.template cast<W>();
     const auto hi = solveStewartForward<W>(Q, fine);
-    if (hi.complexCount() <= found) return;
+    // Kept when it finds more, or (float) when it tracks the paths float failed at the same count.
+    if (hi.complexCount() < found || (hi.complexCount() == found && !(floatFailed && hi.paths_failed < out.paths_failed)))
+      return;
     StewartForwardSolution<S> esc;
     esc.notes = out.notes;
     esc.notes.push_back("found " + std::to_string(found) + " of " + std::to_string(expected) + " in " +
@@ -994,14 +997,19 @@ template <class S> StewartForwardSolution<S> solveStewartForward(const StewartPl
     esc.paths_failed = hi.paths_failed;
     esc.paths_at_infinity = hi.paths_at_infinity;
     esc.paths_singular = hi.paths_singular;
-    esc.paths_escalated = out.paths_failed + out.paths_singular;
+    esc.paths_escalated = paths;
     out = esc;
   };
-  if (expected > 0 && found < expected && (out.paths_failed > 0 || expected - found <= 8)) {
+  // Float: a path whose corrector meets float's rounding floor mid-way (an ill-conditioned stretch,
+  // e.g. the paths of a 6-3 platform that end at its singular points: Newton stalls at eps·cond
+  // above the tracking tolerance √eps(float) and the step collapses) is a failed path even when
+  // the count is complete; the platform is re-solved in double and the escalation counted.
+  if (floatFailed || (expected > 0 && found < expected && (out.paths_failed > 0 || expected - found <= 8))) {
+    const int paths = floatFailed || found >= expected ? out.paths_failed : out.paths_failed + out.paths_singular;
     if constexpr (std::is_same_v<S, float>)
-      escalate.template operator()<double>(false);
+      escalate.template operator()<double>(false, paths);
     else if constexpr (std::is_same_v<S, double> || std::is_same_v<S, long double>)
-      escalate.template operator()<__float128>(true);
+      escalate.template operator()<__float128>(true, paths);
   }
   if (expected > 0 && out.complexCount() < expected)
     out.notes.push_back("SHORT: " + std::to_string(out.complexCount()) + " of " + std::to_string(expected) +
