@@ -6,6 +6,7 @@
 // Double precision (a map of ~800 solves).
 #include "soma/geometry/parallel/stewart.hpp"
 #include "soma/geometry/parallel/stewart_numeric.hpp"
+#include "soma/io/platform_file.hpp"
 #include "soma/render/plot.hpp"
 #include "soma/studies/study.hpp"
 
@@ -19,27 +20,9 @@ namespace {
 using S = double;
 namespace rd = soma::render;
 
-/// The platform of studies/platforms/general.json.
-StewartPlatform<S> generalPlatform() {
-  StewartPlatform<S> P;
-  const double b[6][3] = {{0.854648, 0.248159, 0.002365},   {0.806715, 0.596192, -0.055343},
-                          {-0.668405, 0.732368, 0.056675},  {-0.954569, 0.316566, 0.053623},
-                          {-0.19489, -0.936848, -0.052013}, {0.304459, -1.079584, 0.063352}};
-  const double q[6][3] = {{0.48443, 0.136726, 0.018518},    {-0.142747, 0.423322, -0.024849},
-                          {-0.24425, 0.452013, 0.030514},   {-0.241091, -0.381148, -0.042368},
-                          {-0.196986, -0.460494, -0.020788}, {0.485676, -0.026128, 0.020398}};
-  const double L[6] = {1.042060141, 1.415693982, 1.051051562, 1.443082953, 0.974698497, 1.427782454};
-  for (int i = 0; i < 6; ++i) {
-    P.base[i] = Vec3<S>(b[i][0], b[i][1], b[i][2]);
-    P.platform[i] = Vec3<S>(q[i][0], q[i][1], q[i][2]);
-    P.legs[i] = L[i];
-  }
-  return P;
-}
-
 // GF §11.5.4, GF-11.5.4-stewart-forty; SOMA-11.5.4-stewart-real-map
 void realMap(Context& c) {
-  const StewartPlatform<S> P0 = generalPlatform();
+  const StewartPlatform<S> P0 = io::readPlatform<S>(sourceRoot() / "studies/platforms/general.json");
   const int nx = 33, ny = 25;
   const double s0 = -0.5, s1 = 0.9, d0 = -0.2, d1 = 0.45;
   std::vector<int> real(std::size_t(nx) * ny, 0);
