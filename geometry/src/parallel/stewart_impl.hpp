@@ -865,6 +865,15 @@ template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S
 
 }  // namespace stewart_detail
 
+namespace stewart_detail {
+/// Quaternion product of complex quaternions (w, x, y, z), bilinear: no complex conjugation.
+template <class S>
+std::array<std::complex<S>, 4> quatMul(const std::array<std::complex<S>, 4>& u, const std::array<std::complex<S>, 4>& v) {
+  return {u[0] * v[0] - u[1] * v[1] - u[2] * v[2] - u[3] * v[3], u[0] * v[1] + u[1] * v[0] + u[2] * v[3] - u[3] * v[2],
+          u[0] * v[2] + u[2] * v[0] + u[3] * v[1] - u[1] * v[3], u[0] * v[3] + u[3] * v[0] + u[1] * v[2] - u[2] * v[1]};
+}
+}  // namespace stewart_detail
+
 template <class S> StewartComplexPosture<S> stewartComplexPosture(const StewartPlatform<S>& P, const StudyPointC<S>& x) {
   using C = std::complex<S>;
   // The solve's frame: p' = (p − p̄)/σ, q' = (q − q̄)/σ (forwardCore).
@@ -876,12 +885,8 @@ template <class S> StewartComplexPosture<S> stewartComplexPosture(const StewartP
   pb /= S(6);
   qb /= S(6);
   const S sigma = stewartScale<S>(P);
-  // Quaternion product (bilinear: no complex conjugation).
   using Q = std::array<C, 4>;
-  const auto mul = [](const Q& u, const Q& v) {
-    return Q{u[0] * v[0] - u[1] * v[1] - u[2] * v[2] - u[3] * v[3], u[0] * v[1] + u[1] * v[0] + u[2] * v[3] - u[3] * v[2],
-             u[0] * v[2] + u[2] * v[0] + u[3] * v[1] - u[1] * v[3], u[0] * v[3] + u[3] * v[0] + u[1] * v[2] - u[2] * v[1]};
-  };
+  const auto mul = stewart_detail::quatMul<S>;
   Q a{x[0], x[1], x[2], x[3]}, c{x[4], x[5], x[6], x[7]};
   using std::sqrt;
   C s = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2] + a[3] * a[3]);
@@ -914,10 +919,7 @@ template <class S> StewartComplexPosture<S> stewartComplexPosture(const StewartP
 template <class S> S stewartComplexResidual(const StewartPlatform<S>& P, const StewartComplexPosture<S>& g) {
   using C = std::complex<S>;
   using Q = std::array<C, 4>;
-  const auto mul = [](const Q& u, const Q& v) {
-    return Q{u[0] * v[0] - u[1] * v[1] - u[2] * v[2] - u[3] * v[3], u[0] * v[1] + u[1] * v[0] + u[2] * v[3] - u[3] * v[2],
-             u[0] * v[2] + u[2] * v[0] + u[3] * v[1] - u[1] * v[3], u[0] * v[3] + u[3] * v[0] + u[1] * v[2] - u[2] * v[1]};
-  };
+  const auto mul = stewart_detail::quatMul<S>;
   const Q& a = g.rotation;
   const Q abar{a[0], -a[1], -a[2], -a[3]};
   const S size = stewartScale<S>(P);
