@@ -703,8 +703,12 @@ template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S
   const std::uint64_t gseeds[3] = {1, 1, 2};
   std::vector<int> finiteFrom;  // start index of each finite solution
   std::vector<X<S>> singularEnds;  // endpoints at singular points (the last attempt's)
+  std::vector<int> failedPaths;     // the last attempt's failed paths
+  int lastAttempt = 0;
   for (int attempt = 0; attempt < 3 && !todo.empty(); ++attempt) {
     hom.gamma = gammaOf<S>(gseeds[attempt]);
+    lastAttempt = attempt;
+    failedPaths.clear();
     if (attempt == 2) {
       // With a new gamma the start ↔ end correspondence changes: track every path again and
       // keep whatever is new.
@@ -748,6 +752,7 @@ template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S
         }
       } else {
         ++failed;
+        failedPaths.push_back(k);
         again.push_back(k);
       }
     }
@@ -757,6 +762,65 @@ template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S
       out.notes.push_back(std::to_string(again.size()) + " paths still short; every path re-tracked with another gamma");
     todo = again;
     if (finite.size() >= 40) break;
+  }
+  // Float: a path whose corrector meets float's rounding floor mid-way (an ill-conditioned stretch,
+  // e.g. the paths of a 6-3 platform that go to its singular points: Newton stalls at eps·cond above
+  // the tracking tolerance √eps(float) and the step collapses, whatever the smallest step) is
+  // re-tracked in double — the same start, γ and target — and its endpoint brought back to float
+  // (Newton-polished there); counted in paths_escalated and said in a note.
+  if constexpr (std::is_same_v<S, float>) {
+    if (!failedPaths.empty()) {
+      ParameterHomotopy<double> hd;
+      hd.P0 = stewartStartPlatform<double>();
+      const CP<double> P1d = stewartComplexPlatform<double>(Pn.template cast<double>());
+      for (int i = 0; i < 6; ++i) {
+        for (int k = 0; k < 3; ++k) {
+          hd.D.p[i][k] = P1d.p[i][k] - hd.P0.p[i][k];
+          hd.D.q[i][k] = P1d.q[i][k] - hd.P0.q[i][k];
+        }
+        hd.D.L2[i] = P1d.L2[i] - hd.P0.L2[i];
+      }
+      hd.h = chart<double>();
+      hd.gamma = gammaOf<double>(gseeds[lastAttempt]);
+      TrackOptions od;
+      od.hmax = hmaxes[lastAttempt];
+      od.hstart = std::min(od.hstart, od.hmax);
+      const auto& startsD = stewartStartSolutions<double>();
+      int nFinite = 0, nSingular = 0, nInfinite = 0, nFailed = 0;
+      for (int k : failedPaths) {
+        ++out.paths_tracked;
+        ++out.paths_escalated;
+        const PathResult<double> r = trackPath<double>(hd, startsD[static_cast<std::size_t>(k)], od);
+        X<S> x;
+        for (int j = 0; j < 8; ++j) x[j] = C<S>(static_cast<S>(r.x[j].real()), static_cast<S>(r.x[j].imag()));
+        const bool infinite = maxNormA<double>(r.x) <= Tolerance<double>::sqrtEpsilon() * maxNorm<double>(r.x);
+        if (r.end == PathEnd::Finite && !infinite) {
+          correct<S>(hom, x, S(1), 8, S(64) * Tolerance<S>::epsilon());
+          bool dup = false;
+          for (const auto& y : finite) dup = dup || samePoint<S>(y, x, dupTol);
+          if (!dup) finite.push_back(x), ++nFinite;
+          else ++nSingular, ++singular, singularEnds.push_back(x);
+        } else if (infinite) {
+          ++nInfinite, ++atInfinity;
+        } else if (r.end == PathEnd::Singular || r.tau >= 1.0 - std::sqrt(trackEps<double>())) {
+          if (maxNormA<double>(r.x) <= std::sqrt(trackEps<double>()) * maxNorm<double>(r.x)) {
+            ++nInfinite, ++atInfinity;
+          } else {
+            ++nSingular, ++singular;
+            singularEnds.push_back(x);
+          }
+        } else {
+          ++nFailed;
+          continue;
+        }
+        --failed;
+      }
+      out.notes.push_back(std::to_string(failedPaths.size()) +
+                          " paths failed in float (Newton at float's rounding floor on an ill-conditioned stretch); "
+                          "re-tracked in double: " + std::to_string(nFinite) + " finite, " + std::to_string(nSingular) +
+                          " singular, " + std::to_string(nInfinite) + " at infinity, " + std::to_string(nFailed) +
+                          " still failed");
+    }
   }
   // Multiple roots: short of the class's count, with singular endpoints that gather at a few points
   // (each within Tolerance::input() of the first of its cluster). When the clusters' sizes make up
@@ -965,13 +1029,10 @@ template <class S> StewartForwardSolution<S> solveStewartForward(const StewartPl
   // singular configuration): re-solve in a wider scalar and say so — float in double (which itself
   // goes on to float128 if still short), double and long double in float128 with fine tracking
   // (10⁹ times tighter).
-  const bool floatFailed = std::is_same_v<S, float> && out.paths_failed > 0;
   const auto escalate = [&]<class W>(bool fine, int paths) {
     const StewartPlatform<W> Q = P.template cast<W>();
     const auto hi = solveStewartForward<W>(Q, fine);
-    // Kept when it finds more, or (float) when it tracks the paths float failed at the same count.
-    if (hi.complexCount() < found || (hi.complexCount() == found && !(floatFailed && hi.paths_failed < out.paths_failed)))
-      return;
+    if (hi.complexCount() <= found) return;
     StewartForwardSolution<S> esc;
     esc.notes = out.notes;
     esc.notes.push_back("found " + std::to_string(found) + " of " + std::to_string(expected) + " in " +
@@ -999,15 +1060,11 @@ template <class S> StewartForwardSolution<S> solveStewartForward(const StewartPl
     esc.paths_failed = hi.paths_failed;
     esc.paths_at_infinity = hi.paths_at_infinity;
     esc.paths_singular = hi.paths_singular;
-    esc.paths_escalated = paths;
+    esc.paths_escalated = out.paths_escalated + paths;
     out = esc;
   };
-  // Float: a path whose corrector meets float's rounding floor mid-way (an ill-conditioned stretch,
-  // e.g. the paths of a 6-3 platform that end at its singular points: Newton stalls at eps·cond
-  // above the tracking tolerance √eps(float) and the step collapses) is a failed path even when
-  // the count is complete; the platform is re-solved in double and the escalation counted.
-  if (floatFailed || (expected > 0 && found < expected && (out.paths_failed > 0 || expected - found <= 8))) {
-    const int paths = floatFailed || found >= expected ? out.paths_failed : out.paths_failed + out.paths_singular;
+  if (expected > 0 && found < expected && (out.paths_failed > 0 || expected - found <= 8)) {
+    const int paths = out.paths_failed + out.paths_singular;
     if constexpr (std::is_same_v<S, float>)
       escalate.template operator()<double>(false, paths);
     else if constexpr (std::is_same_v<S, double> || std::is_same_v<S, long double>)

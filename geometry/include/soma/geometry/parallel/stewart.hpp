@@ -104,8 +104,10 @@ template <class S> struct StewartForwardSolution {
   int paths_tracked = 0;
   /// Paths that did not reach a finite nonsingular endpoint on the last attempt.
   int paths_failed = 0;
-  /// Paths of the first solve (in S) that failed or ended singular and were re-solved in a wider
-  /// scalar (0 when no escalation; the notes say which scalar).
+  /// Paths tracked again in a wider scalar (0 when none; a note says which and why): float's failed
+  /// paths re-tracked one by one in double, and the failed or singular paths of a solve short of
+  /// its count, for which the whole platform is re-solved (float → double, double and long double →
+  /// float128).
   int paths_escalated = 0;
   /// Paths whose endpoint lies on the exceptional plane a = 0 (degenerate platforms).
   int paths_at_infinity = 0;
