@@ -79,6 +79,15 @@ TEST_CASE("Stewart classes 6-5, 6-4, 5-5, 4-4: the class's count, certified, the
     CHECK(s.certified);
     CHECK(nearestPosture<double>(s, pose) <= Tolerance<double>::input());
     CHECK(s.worstResidual() <= Tolerance<double>::identity(64));
+    // --complex's list: every complex solution a posture of the platform, multiplicities summing to the count.
+    int total = 0;
+    double worst = 0;
+    for (const auto& c : s.complex_postures) {
+      total += c.multiplicity;
+      worst = std::max(worst, stewartComplexResidual<double>(P, c));
+    }
+    CHECK(total == k.count);
+    CHECK(worst <= Tolerance<double>::identity(4096));
   }
 }
 
