@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 
 #include <map>
+#include <numbers>
 #include <random>
 #include <set>
 
@@ -133,7 +134,36 @@ void stewartClasses(Context& c) {
     rows += fmt::format("{} | {} | {} | {} | {} ({}) | {} | {:.3f} s, {:.1f} s\n", key, cls.name, tab < 0 ? "—" : std::to_string(tab),
                         hom, phc.finite, phc.how, sol.count(), sol.seconds, phc.seconds);
   }
+  // A standard hexapod: planar base and platform, each 3-fold symmetric with the same leg
+  // permutation (random radii and half-angles, leg lengths from a random posture).
+  int hexapodAgree = 0, hexapodTab = 0;
+  for (int t = 0; t < 2; ++t) {
+    const double wb = uni(g, 5, 25), wq = uni(g, 25, 55), rq = uni(g, 0.4, 0.8), phase = uni(g, -10, 10);
+    const double deg = std::numbers::pi / 180;
+    StewartPlatform<S> P;
+    std::array<Vec3<S>, 6> q;
+    for (int k = 0; k < 3; ++k)
+      for (int sg = 0; sg < 2; ++sg) {
+        const double ab = (120 * k + (sg ? wb : -wb)) * deg, aq = (120 * k + 60 + (sg ? wq : -wq) + phase) * deg;
+        P.base[std::size_t(2 * k + sg)] = Vec3<S>(std::cos(ab), std::sin(ab), 0);
+        q[std::size_t(2 * k + sg)] = Vec3<S>(rq * std::cos(aq), rq * std::sin(aq), 0);
+      }
+    for (std::size_t i = 0; i < 6; ++i) P.platform[i] = q[(i + 5) % 6];
+    Vec6<S> xi;
+    xi << uni(g, -0.3, 0.3), uni(g, -0.3, 0.3), uni(g, -0.3, 0.3), uni(g, -0.2, 0.2), uni(g, -0.2, 0.2), uni(g, 0.8, 1.2);
+    P.legs = stewartLegLengths<S>(P, SE3Tangent<S>(xi).exp());
+    const auto cls = classifyStewart<S>(P);
+    const auto sol = solveStewartForward<S>(P);
+    const PhcCount phc = phcCount(P, g, "hexapod", sol.complexCount());
+    hexapodAgree += sol.complexCount() == phc.finite;
+    hexapodTab += cls.expected_count == sol.complexCount();
+    rows += fmt::format("standard hexapod (half-angles {:.1f}°, {:.1f}°) | {} | {} | {} | {} ({}) | {} | {:.3f} s, {:.1f} s\n", wb, wq,
+                        cls.name, cls.expected_count.value_or(-1), sol.complexCount(), phc.finite, phc.how, sol.count(),
+                        sol.seconds, phc.seconds);
+  }
   c.note(rows);
+  c.checkEqual("standard hexapods (planar, 3-fold symmetric; 2 random): homotopy and PHCpack agree", 2, hexapodAgree);
+  c.checkEqual("… and find the class's 28 (stewart_class.hpp), not the 40 of a general planar platform", 2, hexapodTab);
   std::string refusedRows = "pattern | refused because\n";
   for (const auto& [key, why] : refused) refusedRows += fmt::format("{} | {}\n", key, why);
   c.note(refusedRows);

@@ -306,3 +306,54 @@ TEST_CASE("Stewart at the boundary of the assembly space: one posture of multipl
 }
 
 }  // namespace SOMA_UNITY_ID
+
+namespace SOMA_UNITY_ID {
+namespace {
+/// A standard hexapod: base joints at 0°, 120°, 240° ± wb (radius rb), platform joints at 60°, 180°,
+/// 300° ± wq (radius rq), legs joining each base joint to a neighbouring platform joint; planar and
+/// 3-fold symmetric with the same leg permutation on both sides.
+template <class S> StewartPlatform<S> standardHexapod(double wb, double wq, double rb, double rq, double phase) {
+  StewartPlatform<S> P;
+  const double deg = 3.14159265358979323846 / 180;
+  std::array<Vec3<S>, 6> q;
+  for (int k = 0; k < 3; ++k)
+    for (int s = 0; s < 2; ++s) {
+      const double ab = (120 * k + (s ? wb : -wb)) * deg, aq = (120 * k + 60 + (s ? wq : -wq) + phase) * deg;
+      P.base[static_cast<std::size_t>(2 * k + s)] = Vec3<S>(S(rb * std::cos(ab)), S(rb * std::sin(ab)), S(0));
+      q[static_cast<std::size_t>(2 * k + s)] = Vec3<S>(S(rq * std::cos(aq)), S(rq * std::sin(aq)), S(0));
+    }
+  for (std::size_t i = 0; i < 6; ++i) P.platform[i] = q[(i + 5) % 6];
+  const SE3<S> g(SO3<S>(), Vec3<S>(S(0.02), S(-0.03), S(1)));
+  P.legs = stewartLegLengths<S>(P, g);
+  P.legs[1] *= S(1.02);  // lengths off the symmetric posture: the count is the geometry's
+  return P;
+}
+}  // namespace
+
+TEST_CASE("Stewart standard hexapod (planar, 3-fold symmetric): 28, certified; symmetry decided at tol, both sides",
+          "[stewart][stewart_class]") {
+  for (const double phase : {0.0, 7.0}) {
+    INFO("phase " << phase);
+    const auto P = standardHexapod<double>(12, 45, 1.0, 0.6, phase);
+    const auto c = classifyStewart<double>(P);
+    CHECK(c.threefold);
+    CHECK(c.expected_count == 28);
+    const auto s = solveStewart<double>(P);
+    CHECK(s.complexCount() == 28);
+    CHECK(s.certified);
+    const double tol = Tolerance<double>::sqrtEpsilon() * stewartScale<double>(P);
+    auto in = P, out = P;
+    in.platform[2].x() += 0.5 * tol;
+    out.platform[2].x() += 10 * tol;
+    CHECK(classifyStewart<double>(in).threefold);
+    CHECK(!classifyStewart<double>(out).threefold);
+    CHECK(classifyStewart<double>(out).expected_count == 40);
+  }
+  // Only one side symmetric: a general planar platform, 40.
+  auto A = standardHexapod<double>(12, 45, 1.0, 0.6, 0);
+  A.platform[0] = Vec3<double>(0.31, -0.22, 0);
+  CHECK(!classifyStewart<double>(A).threefold);
+  CHECK(classifyStewart<double>(A).expected_count == 40);
+}
+
+}  // namespace SOMA_UNITY_ID

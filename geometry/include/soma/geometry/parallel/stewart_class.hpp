@@ -10,6 +10,8 @@
 //     GF §11.5.2, GF-11.5.2-6-3-stewart-sixteen);
 //   3-3 octahedral (each base joint meets two platform joints, no two legs on the same pair):
 //     16 (Nanua, Waldron & Murthy 1990);
+//   planar base and platform both 3-fold symmetric with the same leg permutation (a standard
+//     hexapod): 28, numerical (homotopy and PHCpack); general planar ones keep 40;
 //   6-5 40; 6-4 32 (two pairs) or 16 (three legs on a joint); 5-5 40 (the two pairs share a leg)
 //     or 24; 4-4 24, 16 or 8 by pattern; 6-3 with three legs on a joint 8; the non-octahedral 3-3
 //     that are not singular 8: Faugère & Lazard enumerate these classes but we could not read their
@@ -42,6 +44,9 @@ struct StewartClassification {
   bool base_collinear = false, platform_collinear = false;
   /// Planar base and platform with |q_i − q_j| = k |p_i − p_j| for all i, j (similar hexagons).
   bool similar = false;
+  /// Planar base and platform that a third of a turn about each plane's centre maps onto
+  /// themselves with the same permutation of the legs (a 3-fold symmetric hexapod).
+  bool threefold = false;
   /// "6-6", "6-3", "3-6", "3-3 octahedral", "5-4", … (base distinct − platform distinct).
   std::string name;
   /// The leg–joint incidence up to renumbering the legs and the joints and swapping base and
@@ -164,6 +169,39 @@ template <class S> Side<S> side(const std::array<Vec3<S>, 6>& x, const S& tol) {
   }
   return s;
 }
+/// The permutation of the joints induced by a rotation through +120° about the normal of the
+/// (planar, not collinear) side through its centroid; nullopt when some joint maps onto none.
+template <class S> std::optional<std::array<int, 6>> thirdTurn(const std::array<Vec3<S>, 6>& x, const S& tol) {
+  Vec3<S> c = Vec3<S>::Zero();
+  for (const auto& v : x) c += v;
+  c /= S(6);
+  int a = 0, b = 0, k = 0;
+  S best = S(0), far = S(0);
+  for (int i = 0; i < 6; ++i)
+    for (int j = i + 1; j < 6; ++j) {
+      const S d = safeNorm(Vec3<S>(x[i] - x[j]));
+      if (d > best) best = d, a = i, b = j;
+    }
+  const Vec3<S> u = Vec3<S>(x[b] - x[a]) / best;
+  for (int i = 0; i < 6; ++i) {
+    const S d = safeNorm(Vec3<S>(Vec3<S>(x[i] - x[a]).cross(u)));
+    if (d > far) far = d, k = i;
+  }
+  Vec3<S> n = Vec3<S>(x[b] - x[a]).cross(Vec3<S>(x[k] - x[a]));
+  n /= safeNorm(n);
+  using std::sqrt;
+  const S cs = S(-1) / S(2), sn = sqrt(S(3)) / S(2);
+  std::array<int, 6> perm{};
+  for (int i = 0; i < 6; ++i) {
+    const Vec3<S> v = x[i] - c;
+    const Vec3<S> w = c + cs * v + sn * n.cross(v) + (S(1) - cs) * n.dot(v) * n;
+    perm[i] = -1;
+    for (int j = 0; j < 6 && perm[i] < 0; ++j)
+      if (safeNorm(Vec3<S>(w - x[j])) <= tol) perm[i] = j;
+    if (perm[i] < 0) return std::nullopt;
+  }
+  return perm;
+}
 }  // namespace stewart_class_detail
 
 /// The class of P. Two joints coincide, three are collinear, six coplanar when within
@@ -249,6 +287,20 @@ template <class S> StewartClassification classifyStewart(const StewartPlatform<S
     c.singular_reason = crowded;
   } else if (!hinge.empty()) {
     c.singular_reason = hinge;
+  } else if (B.planar && Q.planar && B.distinct == 6 && Q.distinct == 6 && !c.similar &&
+             (c.threefold = [&] {
+                const auto pb = thirdTurn<S>(P.base, tol), pq = thirdTurn<S>(P.platform, tol);
+                if (!pb || !pq) return false;
+                std::array<int, 6> inv{};
+                for (int i = 0; i < 6; ++i) inv[(*pq)[i]] = i;
+                for (int i = 0; i < 6; ++i)
+                  if ((*pb)[i] == i) return false;
+                return *pb == *pq || *pb == inv;
+              }())) {
+    // A 3-fold symmetric planar hexapod (the standard hexapod's semi-regular hexagons): 28,
+    // determined numerically (homotopy and PHCpack, SOMA-11.5-stewart-classes).
+    c.name = "6-6 planar 3-fold symmetric";
+    c.expected_count = 28;
   } else if (!c.similar) {
     for (const auto& k : kStewartClassCounts)
       if (c.pattern == k.pattern) {
