@@ -250,7 +250,7 @@ template <class W> W nearestIn(const StewartForwardSolution<W>& s, const SE3<W>&
 template <class W> void sixThree(Context& c) {
   std::mt19937_64 g(63);
   const int n = 5;
-  int sixteen = 0, found = 0, failed = 0, singular = 0, expected = 0;
+  int sixteen = 0, found = 0, failed = 0, singular = 0, expected = 0, escalated = 0;
   for (int t = 0; t < n; ++t) {
     SE3<S> pose;
     auto P = randomPlatform(g, &pose);
@@ -265,7 +265,10 @@ template <class W> void sixThree(Context& c) {
     found += nearestIn(s, poseW) <= Tolerance<W>::sqrtEpsilon();
     failed += s.paths_failed;
     singular += 40 - s.complexCount() - s.paths_at_infinity;
+    escalated += s.paths_escalated;  // float: paths that failed there, re-solved in double (a note says so)
   }
+  c.note(fmt::format("{} paths of the {} platforms failed in {} and were re-solved in a wider scalar.", escalated, n,
+                     scalarName<W>()));
   c.checkEqual(fmt::format("random 6-3 platforms with 16 finite nonsingular solutions (of {}), (2σ₄)³ = 16", n), n,
                sixteen);
   c.checkEqual("… recognised as 6-3 (expected_count 16)", n, expected);

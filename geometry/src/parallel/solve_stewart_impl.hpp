@@ -35,7 +35,8 @@ template <class S> StewartSolution<S> solveStewart(const StewartPlatform<S>& P, 
     sol.notes.push_back(std::string("start system (40 solutions of a random complex platform, 128-path total-degree "
                                     "homotopy, once per process): ") +
                         secs + " s, not included in the time");
-    sol.certified = true;
+    // Certified: every path tracked and the count (with multiplicity) is the class's (stewart_class.hpp).
+    sol.certified = sol.expected_count > 0 && sol.complexCount() == sol.expected_count;
     return sol;
   }
   // Ceres and NLopt run in double; in a wider scalar each posture is then polished by Newton in S.

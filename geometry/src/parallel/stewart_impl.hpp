@@ -1,6 +1,7 @@
 #pragma once
 // Template bodies of parallel/stewart.hpp, instantiated once per scalar by soma_instantiate (cmake/SomaInstantiate.cmake).
 #include "soma/geometry/parallel/stewart.hpp"
+#include "soma/geometry/parallel/stewart_class.hpp"
 
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/safe_norm.hpp"
@@ -16,6 +17,7 @@
 #include <mutex>
 #include <random>
 #include <stdexcept>
+#include <tuple>
 
 namespace soma {
 
@@ -659,7 +661,7 @@ template <class S> std::string sci(const S& v) {
 }
 
 /// The parameter homotopy from the start platform to the (centred, scaled) real platform Pn.
-template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S>& user, bool fine) {
+template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S>& user, bool fine, int expected) {
   StewartForwardSolution<S> out;
   // Centre and scale: p' = (p − p̄)/σ, q' = (q − q̄)/σ, L' = L/σ.
   Vec3<S> pb = Vec3<S>::Zero(), qb = Vec3<S>::Zero();
@@ -700,8 +702,13 @@ template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S
   const double hmaxes[3] = {0.25, 0.03, 0.03};
   const std::uint64_t gseeds[3] = {1, 1, 2};
   std::vector<int> finiteFrom;  // start index of each finite solution
+  std::vector<X<S>> singularEnds;  // endpoints at singular points (the last attempt's)
+  std::vector<int> failedPaths;     // the last attempt's failed paths
+  int lastAttempt = 0;
   for (int attempt = 0; attempt < 3 && !todo.empty(); ++attempt) {
     hom.gamma = gammaOf<S>(gseeds[attempt]);
+    lastAttempt = attempt;
+    failedPaths.clear();
     if (attempt == 2) {
       // With a new gamma the start ↔ end correspondence changes: track every path again and
       // keep whatever is new.
@@ -714,6 +721,7 @@ template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S
     o.hstart = std::min(o.hstart, o.hmax);
     std::vector<int> again;
     atInfinity = singular = failed = 0;
+    if (attempt != 1) singularEnds.clear();  // attempts 0 and 2 track every path
     for (int k : todo) {
       ++out.paths_tracked;
       const PathResult<S> r = trackPath<S>(hom, starts[k], o);
@@ -724,6 +732,9 @@ template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S
         if (!dup) {
           finite.push_back(r.x);
           finiteFrom.push_back(k);
+        } else if (r.pivotRatio <= Tolerance<S>::input()) {
+          ++singular;  // two paths met at a nearly singular point: a multiple root (resolved below)
+          singularEnds.push_back(r.x);
         } else if (attempt < 2) {
           again.push_back(k);  // two paths met at a nonsingular point: path jumping
         }
@@ -733,10 +744,15 @@ template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S
         // The step collapsed just before τ = 1 (or Newton does not converge quadratically at
         // τ = 1): the endpoint is a singular solution of a degenerate platform; a smaller step
         // or another gamma ends there again.
-        if (maxNormA<S>(r.x) <= sqrt(trackEps<S>()) * maxNorm<S>(r.x)) ++atInfinity;
-        else ++singular;
+        if (maxNormA<S>(r.x) <= sqrt(trackEps<S>()) * maxNorm<S>(r.x)) {
+          ++atInfinity;
+        } else {
+          ++singular;
+          singularEnds.push_back(r.x);
+        }
       } else {
         ++failed;
+        failedPaths.push_back(k);
         again.push_back(k);
       }
     }
@@ -747,6 +763,120 @@ template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S
     todo = again;
     if (finite.size() >= 40) break;
   }
+  // Float: a path whose corrector meets float's rounding floor mid-way (an ill-conditioned stretch,
+  // e.g. the paths of a 6-3 platform that go to its singular points: Newton stalls at eps·cond above
+  // the tracking tolerance √eps(float) and the step collapses, whatever the smallest step) is
+  // re-tracked in double — the same start, γ and target — and its endpoint brought back to float
+  // (Newton-polished there); counted in paths_escalated and said in a note.
+  if constexpr (std::is_same_v<S, float>) {
+    if (!failedPaths.empty()) {
+      ParameterHomotopy<double> hd;
+      hd.P0 = stewartStartPlatform<double>();
+      const CP<double> P1d = stewartComplexPlatform<double>(Pn.template cast<double>());
+      for (int i = 0; i < 6; ++i) {
+        for (int k = 0; k < 3; ++k) {
+          hd.D.p[i][k] = P1d.p[i][k] - hd.P0.p[i][k];
+          hd.D.q[i][k] = P1d.q[i][k] - hd.P0.q[i][k];
+        }
+        hd.D.L2[i] = P1d.L2[i] - hd.P0.L2[i];
+      }
+      hd.h = chart<double>();
+      hd.gamma = gammaOf<double>(gseeds[lastAttempt]);
+      TrackOptions od;
+      od.hmax = hmaxes[lastAttempt];
+      od.hstart = std::min(od.hstart, od.hmax);
+      const auto& startsD = stewartStartSolutions<double>();
+      int nFinite = 0, nSingular = 0, nInfinite = 0, nFailed = 0;
+      for (int k : failedPaths) {
+        ++out.paths_tracked;
+        ++out.paths_escalated;
+        const PathResult<double> r = trackPath<double>(hd, startsD[static_cast<std::size_t>(k)], od);
+        X<S> x;
+        for (int j = 0; j < 8; ++j) x[j] = C<S>(static_cast<S>(r.x[j].real()), static_cast<S>(r.x[j].imag()));
+        const bool infinite = maxNormA<double>(r.x) <= Tolerance<double>::sqrtEpsilon() * maxNorm<double>(r.x);
+        if (r.end == PathEnd::Finite && !infinite) {
+          correct<S>(hom, x, S(1), 8, S(64) * Tolerance<S>::epsilon());
+          bool dup = false;
+          for (const auto& y : finite) dup = dup || samePoint<S>(y, x, dupTol);
+          if (!dup) finite.push_back(x), ++nFinite;
+          else ++nSingular, ++singular, singularEnds.push_back(x);
+        } else if (infinite) {
+          ++nInfinite, ++atInfinity;
+        } else if (r.end == PathEnd::Singular || r.tau >= 1.0 - std::sqrt(trackEps<double>())) {
+          if (maxNormA<double>(r.x) <= std::sqrt(trackEps<double>()) * maxNorm<double>(r.x)) {
+            ++nInfinite, ++atInfinity;
+          } else {
+            ++nSingular, ++singular;
+            singularEnds.push_back(x);
+          }
+        } else {
+          ++nFailed;
+          continue;
+        }
+        --failed;
+      }
+      out.notes.push_back(std::to_string(failedPaths.size()) +
+                          " paths failed in float (Newton at float's rounding floor on an ill-conditioned stretch); "
+                          "re-tracked in double: " + std::to_string(nFinite) + " finite, " + std::to_string(nSingular) +
+                          " singular, " + std::to_string(nInfinite) + " at infinity, " + std::to_string(nFailed) +
+                          " still failed");
+    }
+  }
+  // Multiple roots: short of the class's count, with singular endpoints that gather at a few points
+  // (each within Tolerance::input() of the first of its cluster). When the clusters' sizes make up
+  // exactly the missing count, each is one root of that multiplicity — two paths ending together at
+  // a double root: a posture on the boundary of the assembly space, where two real postures merge.
+  // Otherwise (a degenerate class's surplus paths) they stay singular endpoints.
+  std::vector<int> mult(finite.size(), 1);
+  if (expected > 0 && static_cast<int>(finite.size()) < expected && !singularEnds.empty() &&
+      static_cast<int>(finite.size() + singularEnds.size()) == expected) {
+    const std::size_t nFinite = finite.size();
+    // A path stopped short of τ = 1 lies ~√(1 − τ) from a double root: Newton at τ = 1 closes that
+    // (linearly, halving the error per step, down to ~√eps at a double root).
+    for (auto& x : singularEnds) {
+      S prev = S(0);
+      for (int it = 0; it < 100; ++it) {
+        X<S> f;
+        M<S> J;
+        hom.eval(x, S(1), f, J, nullptr);
+        if (!(solve8<S>(J, f) > S(0))) break;
+        const S dn = maxNorm<S>(f);
+        if (!(dn == dn) || (it > 0 && dn > S(0.9) * prev)) break;
+        for (int k = 0; k < 8; ++k) x[k] -= f[k];
+        prev = dn;
+        if (dn <= S(64) * Tolerance<S>::epsilon() * std::max(S(1), maxNorm<S>(x))) break;
+      }
+    }
+    std::vector<X<S>> reps;
+    std::vector<int> sizes, joins(nFinite, 0);
+    const auto near = [](const X<S>& x, const X<S>& y) {
+      return projectiveDistance<S>(normalizedMax<S>(x), normalizedMax<S>(y)) <= Tolerance<S>::input();
+    };
+    for (const auto& x : singularEnds) {
+      bool joined = false;
+      for (std::size_t k = 0; k < nFinite && !joined; ++k)
+        if (near(finite[k], x)) ++joins[k], joined = true;
+      for (std::size_t k = 0; k < reps.size() && !joined; ++k)
+        if (near(reps[k], x)) ++sizes[k], joined = true;
+      if (!joined) reps.push_back(x), sizes.push_back(1);
+    }
+    bool allMultiple = true;
+    for (int m : sizes) allMultiple = allMultiple && m >= 2;
+    if (allMultiple) {
+      const auto say = [&](int m) {
+        out.notes.push_back(std::to_string(m) + " paths end together at one singular point: a root of multiplicity " +
+                            std::to_string(m) + " (postures merged: the boundary of the assembly space)");
+      };
+      for (std::size_t k = 0; k < nFinite; ++k)
+        if (joins[k] > 0) mult[k] += joins[k], say(mult[k]);
+      for (std::size_t k = 0; k < reps.size(); ++k) {
+        finite.push_back(reps[k]);
+        mult.push_back(sizes[k]);
+        say(sizes[k]);
+      }
+      singular = 0;
+    }
+  }
   out.paths_failed = failed;
   out.paths_at_infinity = atInfinity;
   out.paths_singular = singular;
@@ -756,10 +886,12 @@ template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S
     out.notes.push_back(std::to_string(singular) + " paths ended at singular (multiple) solutions");
 
   // Real solutions: the representative with largest coordinate 1 is real to √eps.
-  std::vector<std::pair<SE3<S>, S>> real;
-  for (const auto& x : finite) {
+  std::vector<std::tuple<SE3<S>, S, int>> real;
+  for (std::size_t f = 0; f < finite.size(); ++f) {
+    const X<S>& x = finite[f];
     const X<S> xn = normalizedMax<S>(x);
     out.complex_solutions.push_back(xn);
+    out.multiplicity.push_back(mult[f]);
     S im = S(0);
     for (const auto& z : xn) {
       using std::abs;
@@ -769,7 +901,8 @@ template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S
     ++out.real_count;
     Vec8<S> xr;
     for (int k = 0; k < 8; ++k) xr(k) = xn[k].real();
-    if (!realPolish<S>(P1, xr)) {
+    // A multiple root converges only linearly: its real Newton polish stops at √eps.
+    if (!realPolish<S>(P1, xr) && mult[f] == 1) {
       out.notes.push_back("a real solution did not converge under the real Newton polish (kept unpolished)");
     }
     try {
@@ -778,17 +911,18 @@ template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S
       const Mat3<S> R = gn.rotation();
       const Vec3<S> t = sigma * gn.translation() + pb - R * qb;
       const SE3<S> g(gn.so3(), t);
-      real.emplace_back(g, stewartResidual<S>(user, g));
+      real.emplace_back(g, stewartResidual<S>(user, g), mult[f]);
     } catch (const InvalidInput& e) {
       out.notes.push_back(std::string("a real solution is not a rigid motion: ") + e.what());
     }
   }
   std::sort(real.begin(), real.end(), [](const auto& A, const auto& B) {
-    return A.first.translation()(2) > B.first.translation()(2);
+    return std::get<0>(A).translation()(2) > std::get<0>(B).translation()(2);
   });
-  for (const auto& [g, r] : real) {
+  for (const auto& [g, r, m] : real) {
     out.postures.push_back(g);
     out.residuals.push_back(r);
+    out.posture_multiplicity.push_back(m);
   }
   return out;
 }
@@ -796,91 +930,162 @@ template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S
 }  // namespace stewart_detail
 
 namespace stewart_detail {
-/// True when the six points are three distinct points, each used twice (to √eps of the size).
-template <class S> bool threePairs(const std::array<Vec3<S>, 6>& x, const S& size) {
-  const S tol = Tolerance<S>::sqrtEpsilon() * size;
-  for (int i = 0; i < 6; ++i) {
-    int same = 0;
-    for (int j = 0; j < 6; ++j) same += j != i && safeNorm(Vec3<S>(x[i] - x[j])) <= tol;
-    if (same != 1) return false;
-  }
-  return true;
+/// Quaternion product of complex quaternions (w, x, y, z), bilinear: no complex conjugation.
+template <class S>
+std::array<std::complex<S>, 4> quatMul(const std::array<std::complex<S>, 4>& u, const std::array<std::complex<S>, 4>& v) {
+  return {u[0] * v[0] - u[1] * v[1] - u[2] * v[2] - u[3] * v[3], u[0] * v[1] + u[1] * v[0] + u[2] * v[3] - u[3] * v[2],
+          u[0] * v[2] + u[2] * v[0] + u[3] * v[1] - u[1] * v[3], u[0] * v[3] + u[3] * v[0] + u[1] * v[2] - u[2] * v[1]};
 }
 }  // namespace stewart_detail
 
+template <class S> StewartComplexPosture<S> stewartComplexPosture(const StewartPlatform<S>& P, const StudyPointC<S>& x) {
+  using C = std::complex<S>;
+  // The solve's frame: p' = (p − p̄)/σ, q' = (q − q̄)/σ (forwardCore).
+  Vec3<S> pb = Vec3<S>::Zero(), qb = Vec3<S>::Zero();
+  for (int i = 0; i < 6; ++i) {
+    pb += P.base[i];
+    qb += P.platform[i];
+  }
+  pb /= S(6);
+  qb /= S(6);
+  const S sigma = stewartScale<S>(P);
+  using Q = std::array<C, 4>;
+  const auto mul = stewart_detail::quatMul<S>;
+  Q a{x[0], x[1], x[2], x[3]}, c{x[4], x[5], x[6], x[7]};
+  using std::sqrt;
+  C s = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2] + a[3] * a[3]);
+  int m = 0;
+  for (int k = 1; k < 4; ++k)
+    if (std::norm(a[k]) > std::norm(a[m])) m = k;
+  if ((a[m] / s).real() < S(0)) s = -s;
+  for (int k = 0; k < 4; ++k) a[k] /= s, c[k] /= s;
+  const Q abar{a[0], -a[1], -a[2], -a[3]};
+  // t' = 2 c ā (its scalar part 2 a·c vanishes on the Study quadric); R q̄ = a q̄ ā.
+  const Q tn = mul(c, abar);
+  const Q rq = mul(mul(a, Q{C(S(0)), C(qb(0)), C(qb(1)), C(qb(2))}), abar);
+  StewartComplexPosture<S> g;
+  g.rotation = a;
+  for (int k = 0; k < 3; ++k) g.translation[k] = sigma * S(2) * tn[k + 1] + pb(k) - rq[k + 1];
+  const Q cu = mul(Q{C(S(0)), g.translation[0], g.translation[1], g.translation[2]}, a);
+  for (int k = 0; k < 4; ++k) {
+    g.study[k] = a[k];
+    g.study[k + 4] = cu[k] / S(2);
+  }
+  S im = S(0);
+  for (const auto& z : g.study) {
+    using std::abs;
+    im = std::max(im, abs(z.imag()));
+  }
+  g.real = im <= Tolerance<S>::input() * std::max(S(1), stewart_detail::maxNorm<S>(g.study));
+  return g;
+}
+
+template <class S> S stewartComplexResidual(const StewartPlatform<S>& P, const StewartComplexPosture<S>& g) {
+  using C = std::complex<S>;
+  using Q = std::array<C, 4>;
+  const auto mul = stewart_detail::quatMul<S>;
+  const Q& a = g.rotation;
+  const Q abar{a[0], -a[1], -a[2], -a[3]};
+  const S size = stewartScale<S>(P);
+  S worst = S(0);
+  for (int i = 0; i < 6; ++i) {
+    const Q rq = mul(mul(a, Q{C(S(0)), C(P.platform[i](0)), C(P.platform[i](1)), C(P.platform[i](2))}), abar);
+    C d2(S(0));  // in units of the platform's size (no overflow at 1e200)
+    S mag = S(0);
+    for (int k = 0; k < 3; ++k) {
+      const C e = (rq[k + 1] + g.translation[k] - P.base[i](k)) / size;
+      d2 += e * e;
+      mag += std::norm(e);
+    }
+    using std::abs;
+    const S l = P.legs[i] / size;
+    // Relative to the terms' size: a complex posture far out (|t| ≫ size) carries eps·|t|² of rounding.
+    worst = std::max(worst, abs(d2 - l * l) / std::max(mag, l * l));
+  }
+  return worst;
+}
+
 template <class S> StewartForwardSolution<S> solveStewartForward(const StewartPlatform<S>& P, bool fineTracking) {
   validateStewartPlatform<S>(P);
+  // The class decides the expected count (stewart_class.hpp); an architecturally singular platform
+  // is refused with the defect named.
+  const StewartClassification cls = classifyStewart<S>(P);
+  if (!cls.singular_reason.empty())
+    throw InvalidInput("stewart: architecturally singular platform: " + cls.singular_reason);
+  const int expected = cls.expected_count.value_or(0);
   const auto t0 = std::chrono::steady_clock::now();
-  StewartForwardSolution<S> out = stewart_detail::forwardCore<S>(P, fineTracking);
-  // A 6-3 (or 3-6) platform: the joints coincide in pairs on one side; (2σ₄)³ = 16 postures.
-  // GF §11.5.2, GF-11.5.2-6-3-stewart-sixteen
-  const S size = stewartScale<S>(P);
-  const bool sixThree = stewart_detail::threePairs<S>(P.platform, size) || stewart_detail::threePairs<S>(P.base, size);
-  if (sixThree) {
-    out.expected_count = 16;
-    out.notes.push_back("a 6-3 platform (joints coincide in pairs): at most 16 postures (GF §11.5.2); the other " +
-                        std::to_string(40 - out.complexCount()) + " of the 40 general paths end at singular points");
-  }
+  StewartForwardSolution<S> out = stewart_detail::forwardCore<S>(P, fineTracking, expected);
+  out.expected_count = expected;
+  out.platform_class = cls.name;
+  out.pattern = cls.pattern;
+  if (expected == 0)
+    out.notes.push_back("a " + cls.name + " platform (pattern " + cls.pattern + (cls.similar ? ", similar base and platform" : "") +
+                        "): no tabulated count for its class, so the count is not certified");
+  else if (expected < 40)
+    out.notes.push_back("a " + cls.name + " platform (pattern " + cls.pattern + "): " + std::to_string(expected) +
+                        " postures for its class (stewart_class.hpp); the other paths of the 40 end at singular points or at infinity");
   const int found = out.complexCount();
-  // Short with a few failed or singular endpoints (two solutions close together, a platform near
-  // a singular configuration): re-solve in a wider scalar and say so — float in double (which
-  // itself goes on to float128 if still short), double and long double in float128 with fine
-  // tracking (10⁹ times tighter). Many singular endpoints (more than 8 of 40) mean a degenerate
-  // platform (6-3: 24); a wider scalar ends there again, so the count is reported as it is.
-  const int unresolved = out.paths_failed + out.paths_singular;
-  const auto escalate = [&]<class W>(bool fine) {
-    StewartPlatform<W> Q;
-    for (int i = 0; i < 6; ++i) {
-      Q.base[i] = castMatrix<W>(P.base[i]);
-      Q.platform[i] = castMatrix<W>(P.platform[i]);
-      Q.legs[i] = scalarCast<W>(P.legs[i]);
-    }
+  // Short with failed paths, or short by a few (two solutions close together, a platform near a
+  // singular configuration): re-solve in a wider scalar and say so — float in double (which itself
+  // goes on to float128 if still short), double and long double in float128 with fine tracking
+  // (10⁹ times tighter).
+  const auto escalate = [&]<class W>(bool fine, int paths) {
+    const StewartPlatform<W> Q = P.template cast<W>();
     const auto hi = solveStewartForward<W>(Q, fine);
     if (hi.complexCount() <= found) return;
     StewartForwardSolution<S> esc;
     esc.notes = out.notes;
-    esc.notes.push_back("found " + std::to_string(found) + " of 40 in " + std::string(scalarName<S>()) + "; re-solved in " +
-                        std::string(scalarName<W>()) + (fine ? " (paths tracked to 1e-17)" : "") + ": " +
-                        std::to_string(hi.complexCount()));
+    esc.notes.push_back("found " + std::to_string(found) + " of " + std::to_string(expected) + " in " +
+                        std::string(scalarName<S>()) + " (" + std::to_string(out.paths_failed) + " paths failed, " +
+                        std::to_string(out.paths_singular) + " singular); re-solved in " + std::string(scalarName<W>()) +
+                        (fine ? " (paths tracked to 1e-17)" : "") + ": " + std::to_string(hi.complexCount()));
     for (const auto& n : hi.notes) esc.notes.push_back(std::string(scalarName<W>()) + ": " + n);
     for (const auto& x : hi.complex_solutions) {
       StudyPointC<S> y;
       for (int k = 0; k < 8; ++k) y[k] = std::complex<S>(scalarCast<S>(x[k].real()), scalarCast<S>(x[k].imag()));
       esc.complex_solutions.push_back(y);
     }
+    esc.multiplicity = hi.multiplicity;
     for (std::size_t k = 0; k < hi.postures.size(); ++k) {
       const SE3<S> g = hi.postures[k].template cast<S>();
       esc.postures.push_back(g);
       esc.residuals.push_back(stewartResidual<S>(P, g));
     }
+    esc.posture_multiplicity = hi.posture_multiplicity;
     esc.real_count = hi.real_count;
     esc.expected_count = out.expected_count;
+    esc.platform_class = out.platform_class;
+    esc.pattern = out.pattern;
     esc.paths_tracked = out.paths_tracked + hi.paths_tracked;
     esc.paths_failed = hi.paths_failed;
     esc.paths_at_infinity = hi.paths_at_infinity;
     esc.paths_singular = hi.paths_singular;
+    esc.paths_escalated = out.paths_escalated + paths;
     out = esc;
   };
-  // Short with no path failed or singular: two endpoints merged within the scalar's tolerance
-  // (float: a pair of close solutions). The same wider scalar sorts them apart.
-  const bool degenerate = out.paths_failed == 0 && out.paths_singular > 8;
-  if (found < out.expected_count && !degenerate && (unresolved <= 8 || out.paths_failed > 0)) {
+  if (expected > 0 && found < expected && (out.paths_failed > 0 || expected - found <= 8)) {
+    const int paths = out.paths_failed + out.paths_singular;
     if constexpr (std::is_same_v<S, float>)
-      escalate.template operator()<double>(false);
+      escalate.template operator()<double>(false, paths);
     else if constexpr (std::is_same_v<S, double> || std::is_same_v<S, long double>)
-      escalate.template operator()<__float128>(true);
+      escalate.template operator()<__float128>(true, paths);
   }
-  if (out.complexCount() < out.expected_count)
-    out.notes.push_back("SHORT: " + std::to_string(out.complexCount()) + " of " + std::to_string(out.expected_count) +
-                        " complex solutions found (" +
-                        std::to_string(out.paths_failed) + " paths failed, " + std::to_string(out.paths_singular) +
-                        " singular, " + std::to_string(out.paths_at_infinity) + " at infinity)" +
-                        (out.paths_failed == 0 && out.paths_singular > 8
-                             ? ": a degenerate platform (a 6-3 platform has 16 postures, GF §11.5.2)"
-                             : ""));
+  if (expected > 0 && out.complexCount() < expected)
+    out.notes.push_back("SHORT: " + std::to_string(out.complexCount()) + " of " + std::to_string(expected) +
+                        " complex solutions found (" + std::to_string(out.paths_failed) + " paths failed, " +
+                        std::to_string(out.paths_singular) + " singular, " + std::to_string(out.paths_at_infinity) +
+                        " at infinity)");
+  if (expected > 0 && out.complexCount() > expected)
+    out.notes.push_back("MORE: " + std::to_string(out.complexCount()) + " complex solutions found, " +
+                        std::to_string(expected) + " expected for the class " + cls.name);
   if (out.postures.empty())
     out.notes.push_back("no real posture: all " + std::to_string(out.complexCount()) +
                         " solutions are complex (these leg lengths cannot be assembled)");
+  for (std::size_t k = 0; k < out.complex_solutions.size(); ++k) {
+    StewartComplexPosture<S> g = stewartComplexPosture<S>(P, out.complex_solutions[k]);
+    g.multiplicity = k < out.multiplicity.size() ? out.multiplicity[k] : 1;
+    out.complex_postures.push_back(g);
+  }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }
@@ -896,6 +1101,8 @@ template <class S> StewartForwardSolution<S> solveStewartForward(const StewartPl
   template StewartComplexPlatform<S> stewartStartPlatform<S>();                                           \
   template const std::vector<StudyPointC<S>>& stewartStartSolutions<S>();                                 \
   template StewartForwardSolution<S> solveStewartForward<S>(const StewartPlatform<S>&, bool);             \
+  template StewartComplexPosture<S> stewartComplexPosture<S>(const StewartPlatform<S>&, const StudyPointC<S>&);       \
+  template S stewartComplexResidual<S>(const StewartPlatform<S>&, const StewartComplexPosture<S>&);               \
   template bool containsConjugate<S>(const std::vector<StudyPointC<S>>&, const StudyPointC<S>&, const S&);
 
 }  // namespace soma

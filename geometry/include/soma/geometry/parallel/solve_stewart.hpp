@@ -32,8 +32,9 @@ struct StewartOptions {
 
 /// The answer of solveStewart: StewartForwardSolution<S> plus its certification.
 template <class S> struct StewartSolution : StewartForwardSolution<S> {
-  /// True for the homotopy (every one of the 40 complex solutions is tracked, complexCount() says
-  /// how many were found); false for ceres and nlopt (no certificate that every posture was found).
+  /// Homotopy: true when the complex solutions found (with multiplicity) are exactly the count of
+  /// the platform's class (stewart_class.hpp); false when short, when the class has no tabulated
+  /// count, and always for ceres and nlopt (no certificate that every posture was found).
   bool certified = false;
   /// homotopy: seconds spent on the start system (solved once per process; 0 when cached), not
   /// included in `seconds`.

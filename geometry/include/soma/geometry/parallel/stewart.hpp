@@ -62,6 +62,18 @@ template <class S> struct StewartComplexPlatform {
   std::array<std::complex<S>, 6> L2;
 };
 
+/// A complex solution in the user's frame (platform frame → base frame, p ↦ R q + t with R the
+/// sandwich a q ā): the rotation quaternion a = (w, x, y, z) scaled so that a·a = 1 (the bilinear
+/// square, not |a|²; of the two signs, the one whose largest-modulus coordinate has a positive real
+/// part), the translation t, the Study parameters (a, c = ½ t a) and the multiplicity of the root.
+template <class S> struct StewartComplexPosture {
+  std::array<std::complex<S>, 4> rotation;
+  std::array<std::complex<S>, 3> translation;
+  StudyPointC<S> study;
+  bool real = false;
+  int multiplicity = 1;
+};
+
 /// The answer of the forward kinematics (DESIGN §3).
 template <class S> struct StewartForwardSolution {
   /// Real postures p ↦ R p + t of the platform (platform frame → base frame).
@@ -72,15 +84,31 @@ template <class S> struct StewartForwardSolution {
   /// Every finite complex solution found (distinct points of CP⁷, each scaled so that its
   /// largest coordinate is 1), in the centred and scaled coordinates of the solve.
   std::vector<StudyPointC<S>> complex_solutions;
+  /// Multiplicity of each complex solution (1 but at a double root, e.g. a posture on the boundary of
+  /// the assembly space where two real postures merge: 2). complexCount() counts with multiplicity.
+  std::vector<int> multiplicity;
+  /// Multiplicity of each real posture (as multiplicity).
+  std::vector<int> posture_multiplicity;
+  /// complex_solutions in the user's frame (stewartComplexPosture), filled by solveStewartForward.
+  std::vector<StewartComplexPosture<S>> complex_postures;
+  /// The platform's class (stewart_class.hpp: "6-6", "6-3", …) and its leg–joint pattern.
+  std::string platform_class, pattern;
   /// How many of complex_solutions are real (= postures.size() unless a real one failed the
   /// real polish, which a note reports).
   int real_count = 0;
-  /// 40: the bound for a general 6-6 platform. GF §11.5.4, GF-11.5.4-stewart-forty
+  /// The number of complex postures of the platform's class (40 for a general 6-6 platform, GF
+  /// §11.5.4, GF-11.5.4-stewart-forty; stewart_class.hpp for the others); 0 when the class has no
+  /// tabulated count (the solve is then not certified).
   int expected_count = 40;
   /// Paths tracked in total (40 on the plain path; more when some were re-tracked).
   int paths_tracked = 0;
   /// Paths that did not reach a finite nonsingular endpoint on the last attempt.
   int paths_failed = 0;
+  /// Paths tracked again in a wider scalar (0 when none; a note says which and why): float's failed
+  /// paths re-tracked one by one in double, and the failed or singular paths of a solve short of
+  /// its count, for which the whole platform is re-solved (float → double, double and long double →
+  /// float128).
+  int paths_escalated = 0;
   /// Paths whose endpoint lies on the exceptional plane a = 0 (degenerate platforms).
   int paths_at_infinity = 0;
   /// Paths that end at a singular point (the step collapses just before τ = 1, or Newton is not
@@ -92,7 +120,14 @@ template <class S> struct StewartForwardSolution {
   std::vector<std::string> notes;
 
   std::size_t count() const { return postures.size(); }
-  int complexCount() const { return static_cast<int>(complex_solutions.size()); }
+  /// Complex solutions counted with multiplicity.
+  int complexCount() const {
+    int n = 0;
+    for (std::size_t k = 0; k < complex_solutions.size(); ++k) n += k < multiplicity.size() ? multiplicity[k] : 1;
+    return n;
+  }
+  /// Distinct complex solutions.
+  int distinctCount() const { return static_cast<int>(complex_solutions.size()); }
   S worstResidual() const {
     S w = S(0);
     for (const auto& r : residuals)
@@ -142,6 +177,14 @@ template <class S> const std::vector<StudyPointC<S>>& stewartStartSolutions();
 template <class S>
 StewartForwardSolution<S> solveStewartForward(const StewartPlatform<S>& P, bool fineTracking = false);
 
+/// A complex solution x of solveStewartForward (in its centred and scaled coordinates) as a
+/// posture of the user's platform P: rotation, translation and Study parameters (complex).
+template <class S> StewartComplexPosture<S> stewartComplexPosture(const StewartPlatform<S>& P, const StudyPointC<S>& x);
+
+/// max_i |e_i·e_i − L_i²| / max(|e_i|², L_i²), e_i = R q_i + t − p_i, for a complex posture (e_i·e_i
+/// the bilinear dot, |e_i|² the Hermitian one): the leg equations' relative residual.
+template <class S> S stewartComplexResidual(const StewartPlatform<S>& P, const StewartComplexPosture<S>& g);
+
 /// True when the solution set holds x's complex conjugate (as a point of CP⁷) within tol.
 template <class S> bool containsConjugate(const std::vector<StudyPointC<S>>& set, const StudyPointC<S>& x,
                                           const S& tol);
@@ -157,6 +200,8 @@ template <class S> bool containsConjugate(const std::vector<StudyPointC<S>>& set
   extern template StewartComplexPlatform<S> stewartStartPlatform<S>();                                    \
   extern template const std::vector<StudyPointC<S>>& stewartStartSolutions<S>();                          \
   extern template StewartForwardSolution<S> solveStewartForward<S>(const StewartPlatform<S>&, bool);      \
+  extern template StewartComplexPosture<S> stewartComplexPosture<S>(const StewartPlatform<S>&, const StudyPointC<S>&); \
+  extern template S stewartComplexResidual<S>(const StewartPlatform<S>&, const StewartComplexPosture<S>&);         \
   extern template bool containsConjugate<S>(const std::vector<StudyPointC<S>>&, const StudyPointC<S>&,    \
                                             const S&);
 SOMA_FOR_EACH_SCALAR(SOMA_STEWART_EXTERN)
