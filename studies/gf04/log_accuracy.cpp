@@ -145,7 +145,6 @@ template <class S> void logAccuracy(Context& c) {
            lib.worstUlps <= 4.0);
   std::vector<Sample> f128;
   if constexpr (std::is_same_v<S, double>) f128 = sweep<__float128>(deltas, thetas);
-  const auto& dbl = own;
   c.note("Method: X = (exp(θâ), t) built in the scalar type, SE3::log in that type, reference in mpfr (≥ 320 bits) "
          "from the same quaternion and translation: ω = 2 atan2(|q_v|, q_w) q_v/|q_v|, v = Jl(ω)⁻¹t with Jl by its "
          "power series. Error = max(‖Δω‖∞/‖ω‖∞, ‖Δv‖∞/‖v‖∞)/ε.");

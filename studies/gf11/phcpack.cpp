@@ -10,7 +10,7 @@
 #include "soma/io/platform_file.hpp"
 #include "soma/studies/study.hpp"
 
-#include "gf11/phc.hpp"
+#include "soma/studies/phc_runner.hpp"
 
 #include <fmt/format.h>
 
@@ -28,7 +28,6 @@
 namespace soma::studies::gf11phc::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
-using namespace soma::studies::phc;
 using S = double;
 constexpr const char* kChapter = "GF 11 — The Study quadric";
 
@@ -58,13 +57,13 @@ void examplePlatformReal(Context& c, const std::vector<std::string>& x8, const E
   std::vector<std::string> eqs;
   std::vector<Mat8<S>> quadrics;
   for (int i = 0; i < 6; ++i) quadrics.push_back(sphereConstraintQuadric<S>(P.base[i], P.platform[i], P.legs[i]));
-  for (const auto& Q : quadrics) eqs.push_back(quadricPolynomial(Q, x8));
-  eqs.push_back(quadricPolynomial(Qs, x8));
+  for (const auto& Q : quadrics) eqs.push_back(phcQuadric(Q, x8));
+  eqs.push_back(phcQuadric(Qs, x8));
   auto g = rng(1155);
   Eigen::VectorXd w(8);
   for (Eigen::Index i = 0; i < w.size(); ++i) w(i) = uni(g);  // a real chart: real solutions stay real
-  eqs.push_back(linearPolynomial(w, x8, 1.0));
-  const PhcRun run = runPhc(eqs, x8, "example");
+  eqs.push_back(phcLinear(w, x8, 1.0));
+  const PhcResult run = solveWithPhc(eqs, x8, "example");
   int finite = 0, real = 0;
   std::vector<Eigen::VectorXcd> reals;
   for (const PhcSolution& s : run.solutions) {
@@ -122,10 +121,10 @@ void countsByPhcpack(Context& c) {
     for (int i = 0; i < legs; ++i) quadrics.push_back(sphereConstraintQuadric<S>(base[i], top[i], L[i]));
     Eigen::VectorXd w(8);
     for (Eigen::Index i = 0; i < w.size(); ++i) w(i) = uni(g);
-    for (const auto& Q : quadrics) eqs.push_back(quadricPolynomial(Q, x8));
-    eqs.push_back(quadricPolynomial(Qs, x8));
-    eqs.push_back(linearPolynomial(w, x8, 1.0));
-    const PhcRun run = runPhc(eqs, x8, k.tag);
+    for (const auto& Q : quadrics) eqs.push_back(phcQuadric(Q, x8));
+    eqs.push_back(phcQuadric(Qs, x8));
+    eqs.push_back(phcLinear(w, x8, 1.0));
+    const PhcResult run = solveWithPhc(eqs, x8, k.tag);
     // Regular solutions off the exceptional 3-plane a = 0 (the S–S varieties all contain the
     // conic a = 0, c·c = 0: paths ending there are singular), and soma's own residuals on them.
     int finite = 0;
@@ -191,12 +190,12 @@ void tripodWrist(Context& c) {
       for (int a = 0; a < 4; ++a)
         for (int b = 0; b < 4; ++b) R(a, b) = Q(idx[a], idx[b]);
       restricted.push_back(R);
-      eqs.push_back(quadricPolynomial(R, names));
+      eqs.push_back(phcQuadric(R, names));
     }
     Eigen::VectorXd w(4);
     for (int i = 0; i < 4; ++i) w(i) = uni(g);
-    eqs.push_back(linearPolynomial(w, names, 1.0));
-    const PhcRun run = runPhc(eqs, names, planar ? "tripod-planar" : "tripod");
+    eqs.push_back(phcLinear(w, names, 1.0));
+    const PhcResult run = solveWithPhc(eqs, names, planar ? "tripod-planar" : "tripod");
     int regular = 0, finite = 0;
     double worst = 0, nearest = 1e300;
     Eigen::VectorXd truth(4);

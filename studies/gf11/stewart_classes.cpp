@@ -11,7 +11,7 @@
 #include "soma/geometry/study/constraint_quadrics.hpp"
 #include "soma/studies/study.hpp"
 
-#include "gf11/phc.hpp"
+#include "soma/studies/phc_runner.hpp"
 
 #include <fmt/format.h>
 
@@ -24,7 +24,6 @@ namespace soma::studies::gf11classes::SOMA_UNITY_ID {  // this file's own names 
 namespace {
 
 using S = double;
-using namespace soma::studies::phc;
 
 double uni(std::mt19937_64& g, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(g); }
 
@@ -74,14 +73,14 @@ struct PhcCount {
 PhcCount phcCount(const StewartPlatform<S>& P, std::mt19937_64& g, const std::string& tag, int compare) {
   const std::vector<std::string> x8 = {"a0", "a1", "a2", "a3", "c0", "c1", "c2", "c3"};
   std::vector<std::string> eqs;
-  for (int i = 0; i < 6; ++i) eqs.push_back(quadricPolynomial(sphereConstraintQuadric<S>(P.base[i], P.platform[i], P.legs[i]), x8));
-  eqs.push_back(quadricPolynomial(studyQuadricMatrix<S>(), x8));
+  for (int i = 0; i < 6; ++i) eqs.push_back(phcQuadric(sphereConstraintQuadric<S>(P.base[i], P.platform[i], P.legs[i]), x8));
+  eqs.push_back(phcQuadric(studyQuadricMatrix<S>(), x8));
   Eigen::VectorXd w(8);
   for (Eigen::Index i = 0; i < 8; ++i) w(i) = uni(g, -1, 1);
-  eqs.push_back(linearPolynomial(w, x8, 1.0));
+  eqs.push_back(phcLinear(w, x8, 1.0));
   PhcCount out;
   for (const std::string opt : {"-b -0", "-b2 -0"}) {
-    const PhcRun run = runPhc(eqs, x8, tag, opt);
+    const PhcResult run = solveWithPhc(eqs, x8, tag, opt);
     int finite = 0;
     for (const PhcSolution& s : run.solutions)
       if (s.regular && s.x.head<4>().norm() > Tolerance<S>::sqrtEpsilon() * s.x.norm()) ++finite;

@@ -17,8 +17,24 @@ namespace soma::studies {
 
 std::string phcNumber(double v) { return fmt::format("{:+.17e}", v); }
 
+std::string phcQuadric(const Eigen::MatrixXd& Q, const std::vector<std::string>& names) {
+  std::string s;
+  for (Eigen::Index i = 0; i < Q.rows(); ++i)
+    for (Eigen::Index j = i; j < Q.cols(); ++j) {
+      const double c = Q(i, j) * (i == j ? 1.0 : 2.0);
+      if (c != 0.0) s += " " + phcNumber(c) + "*" + names[std::size_t(i)] + "*" + names[std::size_t(j)];
+    }
+  return s + ";";
+}
+
+std::string phcLinear(const Eigen::VectorXd& w, const std::vector<std::string>& names, double rhs) {
+  std::string s;
+  for (Eigen::Index i = 0; i < w.size(); ++i) s += " " + phcNumber(w(i)) + "*" + names[std::size_t(i)];
+  return s + " " + phcNumber(-rhs) + ";";
+}
+
 PhcResult solveWithPhc(const std::vector<std::string>& equations, const std::vector<std::string>& names,
-                       const std::string& tag) {
+                       const std::string& tag, const std::string& options) {
   if (std::system("command -v phc > /dev/null 2>&1") != 0)
     throw std::runtime_error("PHCpack's `phc` is not on PATH: install Debian's phcpack (scripts/bootstrap.sh does)");
   const std::filesystem::path dir =
@@ -30,7 +46,7 @@ PhcResult solveWithPhc(const std::vector<std::string>& equations, const std::vec
     for (const auto& e : equations) f << e << "\n";
   }
   const auto t0 = std::chrono::steady_clock::now();
-  const std::string cmd = fmt::format("cd '{}' && timeout 900 phc -b -0 system.txt phc.out > phc.log 2>&1", dir.string());
+  const std::string cmd = fmt::format("cd '{}' && timeout 900 phc {} system.txt phc.out > phc.log 2>&1", dir.string(), options);
   const int rc = std::system(cmd.c_str());
   PhcResult run;
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -59,7 +75,9 @@ PhcResult solveWithPhc(const std::vector<std::string>& equations, const std::vec
       const auto it = std::find(names.begin(), names.end(), m[1].str());
       if (it != names.end()) cur.x(it - names.begin()) = {std::stod(m[2].str()), std::stod(m[3].str())};
     } else if (line.rfind("== err", 0) == 0) {
-      cur.regular = std::regex_search(line, m, verdict) && m[2] == "regular";
+      const bool matched = std::regex_search(line, m, verdict);
+      cur.regular = matched && m[2] == "regular";
+      cur.real = matched && m[1] == "real";
       run.solutions.push_back(cur);
       inSolution = false;
     } else if (std::regex_search(line, m, summary)) {

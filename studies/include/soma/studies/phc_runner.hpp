@@ -16,6 +16,7 @@ namespace soma::studies {
 struct PhcSolution {
   Eigen::VectorXcd x;    ///< the variables, in the order of the names given
   bool regular = false;  ///< PHCpack's verdict "regular" (else "singular")
+  bool real = false;     ///< PHCpack's verdict "real" (else "complex")
 };
 struct PhcResult {
   std::vector<PhcSolution> solutions;  ///< every path's end point (finite or not)
@@ -26,10 +27,13 @@ struct PhcResult {
 
 /// A real coefficient in PHCpack's syntax (17 significant digits, signed: "+1.2…e-01").
 std::string phcNumber(double v);
+/// xᵀ Q x (Q symmetric) and wᵀx − rhs over the variables `names`, in PHCpack's syntax.
+std::string phcQuadric(const Eigen::MatrixXd& Q, const std::vector<std::string>& names);
+std::string phcLinear(const Eigen::VectorXd& w, const std::vector<std::string>& names, double rhs);
 /// Solves the square system (one polynomial per string, each ending with ';', in the variables
-/// `names`) with `phc -b -0` in a temporary folder named after `tag`. Throws when phc is missing
-/// or fails.
+/// `names`) with `phc OPTIONS` (default `-b -0`: the blackbox, fixed seed; `-b2 -0` in double
+/// double) in a temporary folder named after `tag`. Throws when phc is missing or fails.
 PhcResult solveWithPhc(const std::vector<std::string>& equations, const std::vector<std::string>& names,
-                       const std::string& tag);
+                       const std::string& tag, const std::string& options = "-b -0");
 
 }  // namespace soma::studies
