@@ -4,10 +4,8 @@
 // every path of a total-degree homotopy, and the study counts the regular finite solutions:
 // 6-3 platform 16, general 6-6 platform 40 (the tripod wrist, 8 and 6: GF-11.5.3-tripod-wrist-eight).
 // Double precision (PHCpack's).
-#include "soma/geometry/parallel/stewart.hpp"
 #include "soma/geometry/study/constraint_quadrics.hpp"
 #include "soma/geometry/study/intersection_ring.hpp"
-#include "soma/io/platform_file.hpp"
 #include "soma/studies/study.hpp"
 
 #include "soma/studies/phc_runner.hpp"
@@ -47,49 +45,6 @@ double quadricScale(const std::vector<Mat8<S>>& quadrics) {
   double m = 0;
   for (const auto& Q : quadrics) m = std::max(m, Q.cwiseAbs().maxCoeff());
   return m;
-}
-
-/// The example platform of GF-11.5.4-stewart-forty (studies/platforms/general.json): its real
-/// postures counted by PHCpack (real regular finite solutions of the Study-quadric system) and by
-/// soma's homotopy (solveStewartForward), two independent solvers.
-void examplePlatformReal(Context& c, const std::vector<std::string>& x8, const Eigen::MatrixXd& Qs) {
-  const auto P = io::readPlatform<S>(sourceRoot() / "studies" / "platforms" / "general.json");
-  std::vector<std::string> eqs;
-  std::vector<Mat8<S>> quadrics;
-  for (int i = 0; i < 6; ++i) quadrics.push_back(sphereConstraintQuadric<S>(P.base[i], P.platform[i], P.legs[i]));
-  for (const auto& Q : quadrics) eqs.push_back(phcQuadric(Q, x8));
-  eqs.push_back(phcQuadric(Qs, x8));
-  auto g = rng(1155);
-  Eigen::VectorXd w(8);
-  for (Eigen::Index i = 0; i < w.size(); ++i) w(i) = uni(g);  // a real chart: real solutions stay real
-  eqs.push_back(phcLinear(w, x8, 1.0));
-  const PhcResult run = solveWithPhc(eqs, x8, "example");
-  int finite = 0, real = 0;
-  std::vector<Eigen::VectorXcd> reals;
-  for (const PhcSolution& s : run.solutions) {
-    if (!s.regular || !(s.x.head<4>().norm() > Tolerance<S>::sqrtEpsilon() * s.x.norm())) continue;
-    ++finite;
-    if (s.real) {
-      ++real;
-      reals.push_back(s.x);
-    }
-  }
-  const auto soma = solveStewartForward<S>(P);
-  c.note(fmt::format("example platform (general.json): {} paths, {} regular finite solutions, {} real (PHCpack), {:.1f} s; "
-                     "soma's homotopy: {} complex, {} real.", run.paths, finite, real, run.seconds, soma.complexCount(), soma.count()));
-  c.checkEqual("example platform (general.json): regular finite solutions, PHCpack = soma's homotopy", soma.complexCount(), finite);
-  c.checkEqual("example platform: real postures, PHCpack (its 'real' verdict) = soma's homotopy", (long long)soma.count(), real);
-  // each of soma's real postures is one of PHCpack's real solutions (1 − cos² in PR⁷)
-  double worst = 0;
-  for (const auto& h : soma.postures) {
-    const Vec8<S> y = StudyParameters<S>::fromSE3(h).coeffs();
-    double best = 1;
-    for (const auto& x : reals)
-      best = std::min(best, std::max(0.0, 1 - std::norm(x.dot(y.cast<std::complex<double>>())) / (x.squaredNorm() * y.squaredNorm())));
-    worst = std::max(worst, best);
-  }
-  c.checkResidual("example platform: each real posture of soma's homotopy is a real PHCpack solution (1 − cos², ≤ 16 ε)",
-                  worst, Tolerance<S>::identity(16));
 }
 
 void countsByPhcpack(Context& c) {
@@ -155,7 +110,6 @@ void countsByPhcpack(Context& c) {
     c.checkResidual(k.name + ": the generating real pose is among them (1 − cos² in PR⁷, ≤ 16 ε)", nearestPose,
                     Tolerance<S>::identity(16));
   }
-  examplePlatformReal(c, x8, Qs);
 }
 
 // ---- GF-11.5.3-tripod-wrist-eight -------------------------------------------------------------

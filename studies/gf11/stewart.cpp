@@ -230,7 +230,7 @@ void stewartForty(Context& c) {
   c.checkEqual("example platform (studies/platforms/general.json): complex solutions", 40, s.complexCount());
   // Regression value (soma's own earlier output); its independent source is PHCpack, which finds the
   // same real postures of general.json in SOMA-11.5-phcpack-counts.
-  c.checkEqual("… real postures (regression value; PHCpack agrees in SOMA-11.5-phcpack-counts)", 8,
+  c.checkEqual("… real postures (regression value; PHCpack agrees in GF-11-fig-11.1)", 8,
                static_cast<long long>(s.count()));
   if (c.makeFigures() && s.count() > 0) postureGrid(c, P, s, "GF-11.5.4-stewart-postures.png");
 }

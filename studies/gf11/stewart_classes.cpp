@@ -15,6 +15,9 @@
 
 #include <fmt/format.h>
 
+#include <future>
+#include <thread>
+
 #include <map>
 #include <numbers>
 #include <random>
@@ -70,24 +73,46 @@ struct PhcCount {
   double seconds = 0;
   std::string how;
 };
-PhcCount phcCount(const StewartPlatform<S>& P, std::mt19937_64& g, const std::string& tag, int compare) {
+struct PhcJob {
+  std::vector<std::string> equations;
+  std::string tag;
+  int compare = 0;
+};
+PhcJob phcJob(const StewartPlatform<S>& P, std::mt19937_64& g, const std::string& tag, int compare) {
   const std::vector<std::string> x8 = {"a0", "a1", "a2", "a3", "c0", "c1", "c2", "c3"};
-  std::vector<std::string> eqs;
-  for (int i = 0; i < 6; ++i) eqs.push_back(phcQuadric(sphereConstraintQuadric<S>(P.base[i], P.platform[i], P.legs[i]), x8));
-  eqs.push_back(phcQuadric(studyQuadricMatrix<S>(), x8));
+  PhcJob job{{}, tag, compare};
+  for (int i = 0; i < 6; ++i) job.equations.push_back(phcQuadric(sphereConstraintQuadric<S>(P.base[i], P.platform[i], P.legs[i]), x8));
+  job.equations.push_back(phcQuadric(studyQuadricMatrix<S>(), x8));
   Eigen::VectorXd w(8);
   for (Eigen::Index i = 0; i < 8; ++i) w(i) = uni(g, -1, 1);
-  eqs.push_back(phcLinear(w, x8, 1.0));
+  job.equations.push_back(phcLinear(w, x8, 1.0));
+  return job;
+}
+PhcCount phcCount(const PhcJob& job) {
+  const std::vector<std::string> x8 = {"a0", "a1", "a2", "a3", "c0", "c1", "c2", "c3"};
   PhcCount out;
   for (const std::string opt : {"-b -0", "-b2 -0"}) {
-    const PhcResult run = solveWithPhc(eqs, x8, tag, opt);
+    const PhcResult run = solveWithPhc(job.equations, x8, job.tag, opt);
     int finite = 0;
-    for (const PhcSolution& s : run.solutions)
-      if (s.regular && s.x.head<4>().norm() > Tolerance<S>::sqrtEpsilon() * s.x.norm()) ++finite;
+    for (const PhcSolution& sol : run.solutions)
+      if (sol.regular && sol.x.head<4>().norm() > Tolerance<S>::sqrtEpsilon() * sol.x.norm()) ++finite;
     out.finite = finite;
     out.seconds += run.seconds;
     out.how = "phc " + opt;
-    if (finite == compare) break;
+    if (finite == job.compare) break;
+  }
+  return out;
+}
+/// The PHCpack runs, as many at a time as the machine has cores (each is one sequential `phc`
+/// process: run one after another they were 160 s of the report's 340 s on 2 cores).
+std::vector<PhcCount> phcCounts(const std::vector<PhcJob>& jobs) {
+  const std::size_t width = std::max(1u, std::thread::hardware_concurrency());
+  std::vector<PhcCount> out(jobs.size());
+  for (std::size_t first = 0; first < jobs.size(); first += width) {
+    std::vector<std::future<PhcCount>> running;
+    for (std::size_t k = first; k < std::min(jobs.size(), first + width); ++k)
+      running.push_back(std::async(std::launch::async, [&jobs, k] { return phcCount(jobs[k]); }));
+    for (std::size_t k = 0; k < running.size(); ++k) out[first + k] = running[k].get();
   }
   return out;
 }
@@ -115,13 +140,28 @@ void stewartClasses(Context& c) {
   std::string rows = "pattern | class | table | homotopy | PHCpack | real | time (homotopy, PHCpack)\n";
   int agree = 0, tabulated = 0, defining = 0, total = 0;
   std::mt19937_64 g(1151);
+  struct Solved {
+    std::string key, name;
+    SE3<S> pose;
+    StewartForwardSolution<S> sol;
+  };
+  std::vector<Solved> solved;
+  std::vector<PhcJob> jobs;
   for (const auto& [key, bq] : patterns) {
     SE3<S> pose;
     const auto P = platformOf(bq.first, bq.second, g, &pose);
     const auto cls = classifyStewart<S>(P);
-    const auto sol = solveStewartForward<S>(P);
+    auto sol = solveStewartForward<S>(P);
+    jobs.push_back(phcJob(P, g, "classes-" + std::to_string(jobs.size()), sol.complexCount()));
+    solved.push_back({key, cls.name, pose, std::move(sol)});
+  }
+  const std::vector<PhcCount> phcs = phcCounts(jobs);
+  for (std::size_t n = 0; n < solved.size(); ++n) {
+    const std::string& key = solved[n].key;
+    const SE3<S>& pose = solved[n].pose;
+    const auto& sol = solved[n].sol;
     const int hom = sol.complexCount();
-    const PhcCount phc = phcCount(P, g, "classes", hom);
+    const PhcCount& phc = phcs[n];
     const auto it = table.find(key);
     const int tab = it == table.end() ? -1 : it->second;
     ++total;
@@ -130,7 +170,7 @@ void stewartClasses(Context& c) {
     bool hit = false;
     for (const auto& h : sol.postures) hit = hit || (h.matrix() - pose.matrix()).norm() <= Tolerance<S>::input();
     defining += hit;
-    rows += fmt::format("{} | {} | {} | {} | {} ({}) | {} | {:.3f} s, {:.1f} s\n", key, cls.name, tab < 0 ? "—" : std::to_string(tab),
+    rows += fmt::format("{} | {} | {} | {} | {} ({}) | {} | {:.3f} s, {:.1f} s\n", key, solved[n].name, tab < 0 ? "—" : std::to_string(tab),
                         hom, phc.finite, phc.how, sol.count(), sol.seconds, phc.seconds);
   }
   // A standard hexapod: planar base and platform, each 3-fold symmetric with the same leg
@@ -153,7 +193,7 @@ void stewartClasses(Context& c) {
     P.legs = stewartLegLengths<S>(P, SE3Tangent<S>(xi).exp());
     const auto cls = classifyStewart<S>(P);
     const auto sol = solveStewartForward<S>(P);
-    const PhcCount phc = phcCount(P, g, "hexapod", sol.complexCount());
+    const PhcCount phc = phcCount(phcJob(P, g, "hexapod", sol.complexCount()));
     hexapodAgree += sol.complexCount() == phc.finite;
     hexapodTab += cls.expected_count == sol.complexCount();
     rows += fmt::format("standard hexapod (half-angles {:.1f}°, {:.1f}°) | {} | {} | {} | {} ({}) | {} | {:.3f} s, {:.1f} s\n", wb, wq,
