@@ -1,7 +1,8 @@
 #pragma once
-// Helpers shared by the studies of GF chapter 1 (gf01/*.cpp): fixed-seed draws in every scalar,
-// max-norms that propagate NaN, and the finite-difference step and error bound the studies use.
+// Helpers shared by the studies of GF chapter 1 (gf01/*.cpp): random vectors and matrices of any
+// size (on chapter 4's draws), and the finite-difference step and error bound the studies use.
 // Nothing here is library code.
+#include "gf04/common.hpp"
 #include "soma/algebra/small_linalg.hpp"
 #include "soma/algebra/tolerance.hpp"
 #include "soma/studies/study.hpp"
@@ -12,6 +13,10 @@ namespace soma::studies::gf01 {
 
 inline constexpr const char* kChapter = "GF 1 — Introduction";
 
+// Fixed-seed draws and the NaN-propagating maxima are chapter 4's (gf04/common.hpp).
+using gf04::maxAbs;
+using gf04::maxOf;
+using gf04::uniform;
 using std::abs;
 using std::cos;
 using std::pow;
@@ -21,37 +26,16 @@ using std::sqrt;
 template <class S> using VecX = Eigen::Matrix<S, Eigen::Dynamic, 1>;
 template <class S> using MatX = detail::SmallMat<S>;
 
-/// Uniform in [lo, hi], drawn in double (exact in every rung) and cast to S.
-template <class S> S uni(std::mt19937_64& g, double lo = -1, double hi = 1) {
-  return scalarCast<S>(std::uniform_real_distribution<double>(lo, hi)(g));
-}
 template <class S> VecX<S> randomVec(std::mt19937_64& g, Eigen::Index n) {
   VecX<S> v(n);
-  for (Eigen::Index i = 0; i < n; ++i) v(i) = uni<S>(g);
+  for (Eigen::Index i = 0; i < n; ++i) v(i) = uniform<S>(g);
   return v;
 }
 template <class S> MatX<S> randomMat(std::mt19937_64& g, Eigen::Index r, Eigen::Index c) {
   MatX<S> m(r, c);
   for (Eigen::Index i = 0; i < r; ++i)
-    for (Eigen::Index j = 0; j < c; ++j) m(i, j) = uni<S>(g);
+    for (Eigen::Index j = 0; j < c; ++j) m(i, j) = uniform<S>(g);
   return m;
-}
-/// Largest |entry|; NaN or infinity if an entry is not finite.
-template <class D> typename D::Scalar maxAbs(const Eigen::MatrixBase<D>& m) {
-  typename D::Scalar r(0);
-  for (Eigen::Index i = 0; i < m.rows(); ++i)
-    for (Eigen::Index j = 0; j < m.cols(); ++j) {
-      const typename D::Scalar a = abs(m(i, j));
-      if (!isFinite(a)) return a;
-      if (a > r) r = a;
-    }
-  return r;
-}
-/// max(a, b), propagating NaN.
-template <class S> S worse(const S& a, const S& b) {
-  if (!isFinite(a)) return a;
-  if (!isFinite(b)) return b;
-  return a < b ? b : a;
 }
 /// Central-difference step h = ε^{1/3}: truncation h²|f'''|/6 and rounding ε|f|/h are both
 /// O(ε^{2/3}) — the error bound the derivative checks state in their names.
@@ -66,7 +50,7 @@ template <class S> S fdBound(int factor) { return S(factor) * fdStep<S>() * fdSt
 template <class S, class F, class V> S fdRatio(F f, const V& exact, const S& h) {
   const V f1 = f(h), f2 = f(-h), f3 = f(h / S(2)), f4 = f(-h / S(2));
   const V d1 = (f1 - f2) / (S(2) * h), d2 = (f3 - f4) / h;
-  const S fScale = worse(worse(maxAbs(f1), maxAbs(f2)), S(1));
+  const S fScale = maxOf(maxOf(maxAbs(f1), maxAbs(f2)), S(1));
   const S bound = S(2) * maxAbs(V(d1 - d2)) / S(3) + S(64) * Tolerance<S>::epsilon() * fScale / (h / S(2));
   return maxAbs(V(d2 - exact)) / bound;
 }

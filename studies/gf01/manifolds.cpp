@@ -72,14 +72,14 @@ template <class S> void inverseImplicit(Context& c) {
   for (int k = 0; k < 20; ++k) {
     // a = a regular configuration (0.8 ≤ |θ₂| ≤ 2.3), b = p(a); targets within 0.08 (inside the
     // annulus 0.3 ≤ |y| ≤ 1.7 of reachable points).
-    V2<S> a(uni<S>(g, -3, 3), uni<S>(g, 0.8, 2.3) * (k % 2 == 0 ? S(1) : S(-1)));
+    V2<S> a(uniform<S>(g, -3, 3), uniform<S>(g, 0.8, 2.3) * (k % 2 == 0 ? S(1) : S(-1)));
     const V2<S> b = arm.tip(a);
-    const V2<S> y = b + V2<S>(uni<S>(g, -0.08, 0.08), uni<S>(g, -0.08, 0.08));
+    const V2<S> y = b + V2<S>(uniform<S>(g, -0.08, 0.08), uniform<S>(g, -0.08, 0.08));
     V2<S> t = a;
     if (!continuation(arm, y, t, tol)) continue;
     ++solved;
     const V2<S> closed = arm.inverse(y, a(1) > S(0) ? 1 : -1);
-    worstClosed = worse(worstClosed, worse(angleDiff(t(0), closed(0)), angleDiff(t(1), closed(1))));
+    worstClosed = maxOf(worstClosed, maxOf(angleDiff(t(0), closed(0)), angleDiff(t(1), closed(1))));
     // Derivative of the computed inverse (central differences of Newton solves) = p_*⁻¹ at θ.
     const M2<S> Jinv = arm.jacobian(t).inverse();
     for (int j = 0; j < 2; ++j) {
@@ -88,17 +88,17 @@ template <class S> void inverseImplicit(Context& c) {
         newton(arm, V2<S>(y + V2<S>::Unit(j) * s), ts, tol);
         return ts;
       };
-      worstDeriv = worse(worstDeriv, fdRatio<S>(inv, V2<S>(Jinv.col(j)), h));
+      worstDeriv = maxOf(worstDeriv, fdRatio<S>(inv, V2<S>(Jinv.col(j)), h));
     }
     // Implicit function: f(x, s) = p(x) − s u = b has the solution x = h(s) near (a, 0), with
     // h'(0) = −(∂f/∂x)⁻¹ ∂f/∂s = p_*⁻¹ u; h by Newton at s = ±h, ±h/2.
-    const V2<S> u(uni<S>(g), uni<S>(g));
+    const V2<S> u(uniform<S>(g), uniform<S>(g));
     auto hs = [&](const S& s) {
       V2<S> x = a;
       newton(arm, V2<S>(b + s * u), x, tol);
       return x;
     };
-    worstImplicit = worse(worstImplicit, fdRatio<S>(hs, V2<S>(arm.jacobian(a).inverse() * u), h));
+    worstImplicit = maxOf(worstImplicit, fdRatio<S>(hs, V2<S>(arm.jacobian(a).inverse() * u), h));
   }
   c.checkEqual("Newton continuation from (a, p(a)) reaches 20 nearby targets", 20, solved);
   // θ from Newton and from the closed form differ by the closed form's rounding: atan2 of
@@ -123,7 +123,7 @@ template <class S> void inverseImplicit(Context& c) {
         newton(arm, V2<S>(y + V2<S>::Unit(j) * s), ts, tol);
         return ts;
       };
-      worstNear = worse(worstNear, fdRatio<S>(inv, V2<S>(Jinv.col(j)), S(h / S(100))));
+      worstNear = maxOf(worstNear, fdRatio<S>(inv, V2<S>(Jinv.col(j)), S(h / S(100))));
     }
     c.checkResidual("θ₂ = 0.01: derivative of the computed inverse = p_*⁻¹ (error over its bound)", worstNear, S(1));
     const S growth = maxAbs(Jinv) / maxAbs(M2<S>(arm.jacobian(V2<S>(S(1) / S(2), S(1))).inverse()));
@@ -163,7 +163,7 @@ template <class S> MatX<S> rho1Jacobian(const SerialRobot<S>& robot, const Joint
   return J1;
 }
 template <class S> Vec3<S> unit3(std::mt19937_64& g) {
-  Vec3<S> v(uni<S>(g), uni<S>(g), uni<S>(g));
+  Vec3<S> v(uniform<S>(g), uniform<S>(g), uniform<S>(g));
   return v / sqrt(v.squaredNorm());
 }
 
@@ -179,7 +179,7 @@ template <class S> void immersionTest(Context& c) {
       const S t = twoPi * S(k) / S(720);
       const V2<S> d(S(2) * cos(S(2) * t), cos(t));
       const V2<S> fd = (V2<S>(sin(S(2) * (t + h)), sin(t + h)) - V2<S>(sin(S(2) * (t - h)), sin(t - h))) / (S(2) * h);
-      worstFd = worse(worstFd, maxAbs(V2<S>(fd - d)));
+      worstFd = maxOf(worstFd, maxAbs(V2<S>(fd - d)));
       const S n = sqrt(d.squaredNorm());
       least = n < least ? n : least;
     }
@@ -199,15 +199,15 @@ template <class S> void immersionTest(Context& c) {
     std::vector<SerialJoint<S>> js(3);
     for (auto& j : js) {
       j.axis = unit3<S>(g);
-      j.point = Vec3<S>(uni<S>(g), uni<S>(g), uni<S>(g));
+      j.point = Vec3<S>(uniform<S>(g), uniform<S>(g), uniform<S>(g));
     }
     SE3<S> home;
-    home = SE3<S>(SO3<S>(), Vec3<S>(uni<S>(g), uni<S>(g), uni<S>(g)));
+    home = SE3<S>(SO3<S>(), Vec3<S>(uniform<S>(g), uniform<S>(g), uniform<S>(g)));
     const auto robot = SerialRobot<S>::fromPOE(js, home);
     ++arms;
     for (int m = 0; m < 20; ++m) {
       JointVector<S> q(3);
-      q << uni<S>(g, -3, 3), uni<S>(g, -3, 3), uni<S>(g, -3, 3);
+      q << uniform<S>(g, -3, 3), uniform<S>(g, -3, 3), uniform<S>(g, -3, 3);
       const std::vector<S> sig = detail::smallSingularValues<S>(rho1Jacobian(robot, q));
       const S r = sig[2] / sig[0];
       leastSigma = r < leastSigma ? r : leastSigma;
@@ -222,14 +222,14 @@ template <class S> void immersionTest(Context& c) {
   // θ₃ ↦ (p − r)·(v₁ × v₂), and the rank read from the SVD (second method).
   {
     std::vector<SerialJoint<S>> js(3);
-    const Vec3<S> r(uni<S>(g), uni<S>(g), uni<S>(g));
+    const Vec3<S> r(uniform<S>(g), uniform<S>(g), uniform<S>(g));
     js[0].axis = unit3<S>(g);
     js[0].point = r;
     js[1].axis = unit3<S>(g);
     js[1].point = r;
     js[2].axis = unit3<S>(g);
-    js[2].point = Vec3<S>(uni<S>(g), uni<S>(g), uni<S>(g));
-    const auto robot = SerialRobot<S>::fromPOE(js, SE3<S>(SO3<S>(), Vec3<S>(uni<S>(g), uni<S>(g), uni<S>(g))));
+    js[2].point = Vec3<S>(uniform<S>(g), uniform<S>(g), uniform<S>(g));
+    const auto robot = SerialRobot<S>::fromPOE(js, SE3<S>(SO3<S>(), Vec3<S>(uniform<S>(g), uniform<S>(g), uniform<S>(g))));
     const S t1 = S(3) / S(10);
     S t2(0);
     auto side = [&](const S& t3) {

@@ -19,7 +19,7 @@ template <class S> struct CVec {
   VecX<S> re, im;
 };
 /// Largest |Re| or |Im| of an entry: a scale that neither overflows nor underflows (no squares).
-template <class S> S cscale(const CVec<S>& u) { return worse(maxAbs(u.re), maxAbs(u.im)); }
+template <class S> S cscale(const CVec<S>& u) { return maxOf(maxAbs(u.re), maxAbs(u.im)); }
 /// λu for complex λ = (lr, li).
 template <class S> CVec<S> cmul(const S& lr, const S& li, const CVec<S>& u) {
   return {VecX<S>(lr * u.re - li * u.im), VecX<S>(lr * u.im + li * u.re)};
@@ -36,7 +36,7 @@ template <class S> S minorsResidual(const CVec<S>& u0, const CVec<S>& v0) {
     for (Eigen::Index j = i + 1; j < u.re.size(); ++j) {
       const S re = (u.re(i) * v.re(j) - u.im(i) * v.im(j)) - (u.re(j) * v.re(i) - u.im(j) * v.im(i));
       const S im = (u.re(i) * v.im(j) + u.im(i) * v.re(j)) - (u.re(j) * v.im(i) + u.im(j) * v.re(i));
-      worst = worse(worst, worse(abs(re), abs(im)));
+      worst = maxOf(worst, maxOf(abs(re), abs(im)));
     }
   return worst;
 }
@@ -69,7 +69,7 @@ template <class S> void projectiveEquality(Context& c) {
   const int draws = 100;
   for (int k = 0; k < draws; ++k) {
     const CVec<S> u = randomC(k % 2 == 0);
-    S lr = uni<S>(g, -3, 3), li = k % 3 == 0 ? S(0) : uni<S>(g, -3, 3);
+    S lr = uniform<S>(g, -3, 3), li = k % 3 == 0 ? S(0) : uniform<S>(g, -3, 3);
     if (k == 0) lr = tiny, li = S(0);
     if (k == 1) lr = huge, li = S(0);
     if (k == 2) lr = -tiny, li = tiny;
@@ -78,7 +78,7 @@ template <class S> void projectiveEquality(Context& c) {
     if (k == 4) w.re(0) = w.im(0) = S(0);  // a point with x₀ = 0: nothing may divide by it
     const CVec<S> lu = cmul(lr, li, w);
     const S same = minorsResidual(w, lu);
-    worstSame = worse(worstSame, same);
+    worstSame = maxOf(worstSame, same);
     agreeSame += complexRank<S>({w, lu}) == 1;
     const CVec<S> v = randomC(k % 2 == 1);
     const S diff = minorsResidual(u, v);
@@ -105,7 +105,7 @@ template <class S> void projectiveEquality(Context& c) {
   int onLine = 0, offLine = 0;
   for (int k = 0; k < 20; ++k) {
     const CVec<S> a = randomC(false), b = randomC(false), x = randomC(false);
-    const CVec<S> al = cmul(uni<S>(g), uni<S>(g), a), be = cmul(uni<S>(g), uni<S>(g), b);
+    const CVec<S> al = cmul(uniform<S>(g), uniform<S>(g), a), be = cmul(uniform<S>(g), uniform<S>(g), b);
     const CVec<S> y{VecX<S>(al.re + be.re), VecX<S>(al.im + be.im)};
     onLine += complexRank<S>({a, b, y}) == 2;
     offLine += complexRank<S>({a, b, x}) == 3;
@@ -155,7 +155,7 @@ template <class S> void quadricPolar(Context& c) {
     VecX<S> z = randomVec<S>(g, n1);
     // a transversal z (zᵀMp not small), so that α(s) stays real over the steps ±h
     while (abs(form(M, z, p)) < maxAbs(z) * maxAbs(VecX<S>(M * p)) / S(4)) z = randomVec<S>(g, n1);
-    worstOn = worse(worstOn, relForm(M, p, p));
+    worstOn = maxOf(worstOn, relForm(M, p, p));
     auto gamma = [&](const S& s) {
       const VecX<S> P = p + s * w;
       const S a = form(M, z, z), b = form(M, z, P), cc = form(M, P, P);
@@ -164,7 +164,7 @@ template <class S> void quadricPolar(Context& c) {
     };
     // pᵀMγ(s) has derivative pᵀMγ'(0) at 0: zero iff the velocity lies in pᵀMx = 0
     const S scale = maxAbs(VecX<S>(M * p));
-    worstTangent = worse(worstTangent, fdRatio<S>([&](const S& s) { return V1(form(M, p, gamma(s)) / scale); }, V1(S(0)), h));
+    worstTangent = maxOf(worstTangent, fdRatio<S>([&](const S& s) { return V1(form(M, p, gamma(s)) / scale); }, V1(S(0)), h));
   }
   c.checkResidual("the points drawn lie on the quadric (|pᵀMp| / ‖p‖²‖M‖, 30 points)", worstOn, Tolerance<S>::identity(64));
   c.checkResidual("velocity of a curve in the quadric through p lies in the tangent hyperplane pᵀMx = 0: d/ds pᵀMγ(s) "
@@ -184,7 +184,7 @@ template <class S> void quadricPolar(Context& c) {
     ++lines;
     const S th = S(2) * t1 * t2 / (t1 + t2);  // (0, t_h; t1, t2) = −1
     const VecX<S> q = p + th * y;
-    worstHarmonic = worse(worstHarmonic, relForm(M, p, q));
+    worstHarmonic = maxOf(worstHarmonic, relForm(M, p, q));
   }
   c.checkResidual("harmonic conjugate of p w.r.t. the two intersections of 30 lines through p lies on the polar pᵀMx = 0",
                   worstHarmonic, Tolerance<S>::identity(256));
@@ -201,7 +201,7 @@ template <class S> void quadricPolar(Context& c) {
     ++k;
     const VecX<S> q = x + quadraticRoots(a, b, cc).first * y;
     const S disc = form(M, p, q) * form(M, p, q) - pp * form(M, q, q);
-    worstTouch = worse(worstTouch, abs(disc) / (abs(pp) * maxAbs(q) * maxAbs(q) * maxAbs(M) * S(n1)));
+    worstTouch = maxOf(worstTouch, abs(disc) / (abs(pp) * maxAbs(q) * maxAbs(q) * maxAbs(M) * S(n1)));
   }
   c.checkResidual("… and q ∈ polar ∩ quadric: the line pq is tangent there (relative discriminant, 30 points)",
                   worstTouch, Tolerance<S>::identity(1024));
@@ -234,10 +234,10 @@ template <class S> void quadricSingularityRank(Context& c) {
   S worst1(0), worst2(0), worstSing1(0);
   for (int k = 0; k < 50; ++k) {
     const VecX<S> x = randomVec<S>(g, n1);
-    worst1 = worse(worst1, abs(form(M1, x, x) - a.dot(x) * a.dot(x)) / (maxAbs(a) * maxAbs(a) * maxAbs(x) * maxAbs(x)));
-    worst2 = worse(worst2, abs(form(M2, x, x) - S(2) * a.dot(x) * b.dot(x)) / (maxAbs(a) * maxAbs(b) * maxAbs(x) * maxAbs(x)));
+    worst1 = maxOf(worst1, abs(form(M1, x, x) - a.dot(x) * a.dot(x)) / (maxAbs(a) * maxAbs(a) * maxAbs(x) * maxAbs(x)));
+    worst2 = maxOf(worst2, abs(form(M2, x, x) - S(2) * a.dot(x) * b.dot(x)) / (maxAbs(a) * maxAbs(b) * maxAbs(x) * maxAbs(x)));
     const VecX<S> xh = x - (a.dot(x) / a.squaredNorm()) * a;  // on the hyperplane a·x = 0
-    worstSing1 = worse(worstSing1, maxAbs(VecX<S>(M1 * xh)) / (maxAbs(M1) * maxAbs(xh)));
+    worstSing1 = maxOf(worstSing1, maxAbs(VecX<S>(M1 * xh)) / (maxAbs(M1) * maxAbs(xh)));
   }
   c.checkEqual("M = aaᵀ has rank 1 (SVD)", 1, detail::smallNumericalRank<S>(M1));
   c.checkResidual("… xᵀMx = (a·x)²: the hyperplane a·x = 0 counted twice (50 random x)", worst1, Tolerance<S>::identity(64));
@@ -252,7 +252,7 @@ template <class S> void quadricSingularityRank(Context& c) {
     S worstNull(0);
     for (Eigen::Index j = 2; j < n1; ++j) {
       const VecX<S> z = v.col(j);
-      worstNull = worse(worstNull, worse(abs(a.dot(z)) / sqrt(a.squaredNorm()), abs(b.dot(z)) / sqrt(b.squaredNorm())));
+      worstNull = maxOf(worstNull, maxOf(abs(a.dot(z)) / sqrt(a.squaredNorm()), abs(b.dot(z)) / sqrt(b.squaredNorm())));
     }
     c.checkResidual("… its null space (3 singular vectors, SVD) lies in a·x = 0 and b·x = 0: singular along the "
                     "intersection of the two hyperplanes",
@@ -297,10 +297,10 @@ template <class S> void quadricSingularityRank(Context& c) {
     const Eigen::Matrix<S, 3, 3> im = (ar * bi.transpose() + ai * br.transpose() + br * ai.transpose() + bi * ar.transpose()) / S(2);
     const Eigen::Matrix<S, 3, 3> M = Eigen::Matrix<S, 3, 1>(1, 1, 0).asDiagonal();
     c.checkResidual("x₀² + x₁² = (x₀ + ix₁)(x₀ − ix₁): ½(αβᵀ + βαᵀ) = diag(1, 1, 0), imaginary part 0",
-                    worse(maxAbs(Eigen::Matrix<S, 3, 3>(re - M)), maxAbs(im)), Tolerance<S>::identity(4));
+                    maxOf(maxAbs(Eigen::Matrix<S, 3, 3>(re - M)), maxAbs(im)), Tolerance<S>::identity(4));
     S least = std::numeric_limits<S>::max();
     for (int k = 0; k < 50; ++k) {
-      Eigen::Matrix<S, 3, 1> x(uni<S>(g), uni<S>(g), uni<S>(g));
+      Eigen::Matrix<S, 3, 1> x(uniform<S>(g), uniform<S>(g), uniform<S>(g));
       const S r2 = x(0) * x(0) + x(1) * x(1);
       const S q = x.dot(M * x) / r2;
       least = q < least ? q : least;
@@ -322,7 +322,7 @@ template <class S> void linearProjection(Context& c) {
   for (int k = 0; k < 100; ++k) {
     VecX<S> x = randomVec<S>(g, n1);
     const VecX<S> y = pr(x);
-    worstL = worse(worstL, abs(L(y)) / (maxAbs(a) * maxAbs(a) * maxAbs(cc) * maxAbs(x) * S(n1)));
+    worstL = maxOf(worstL, abs(L(y)) / (maxAbs(a) * maxAbs(a) * maxAbs(cc) * maxAbs(x) * S(n1)));
     MatX<S> m(n1, 3);
     m << cc, x, y;
     collinear += detail::smallNumericalRank<S>(m) == 2;
@@ -337,10 +337,10 @@ template <class S> void linearProjection(Context& c) {
     const VecX<S> yn = y / maxAbs(y), Yn = Y / maxAbs(Y);
     S minor(0);
     for (Eigen::Index i = 0; i < n1; ++i)
-      for (Eigen::Index j = i + 1; j < n1; ++j) minor = worse(minor, abs(yn(i) * Yn(j) - yn(j) * Yn(i)));
+      for (Eigen::Index j = i + 1; j < n1; ++j) minor = maxOf(minor, abs(yn(i) * Yn(j) - yn(j) * Yn(i)));
     // the affine solve divides by a'·(X − C) and by x₀: scale its rounding by those factors
     const S amp = maxAbs(ap) * maxAbs(VecX<S>(X - C)) / abs(ap.dot(VecX<S>(X - C))) * (S(1) + maxAbs(X) + maxAbs(C));
-    worstAffine = worse(worstAffine, minor / amp);
+    worstAffine = maxOf(worstAffine, minor / amp);
   }
   c.checkResidual("L(pr(x)) = 0: the image lies in the hyperplane (100 random x, relative)", worstL, Tolerance<S>::identity(16));
   c.checkEqual("c, x, pr(x) are collinear: rank [c, x, pr(x)] = 2 (SVD, 100 random x)", 100, collinear);
@@ -371,7 +371,7 @@ template <class S> void linearProjection(Context& c) {
   // (expanded along the vector row), which for j = 0 is the book's L(c)x − L(x)c.
   {
     using V4 = Eigen::Matrix<S, 4, 1>;
-    auto r4 = [&] { return V4(uni<S>(g), uni<S>(g), uni<S>(g), uni<S>(g)); };
+    auto r4 = [&] { return V4(uniform<S>(g), uniform<S>(g), uniform<S>(g), uniform<S>(g)); };
     const V4 c1 = r4(), c2 = r4(), l1 = r4(), l2 = r4();
     S worstAgree(0);
     MatX<S> images(4, 20);
@@ -387,8 +387,8 @@ template <class S> void linearProjection(Context& c) {
       const V4 a1 = y1 / maxAbs(y1), a2 = y2 / maxAbs(y2);
       S minor(0);
       for (int i = 0; i < 4; ++i)
-        for (int j = i + 1; j < 4; ++j) minor = worse(minor, abs(a1(i) * a2(j) - a1(j) * a2(i)));
-      worstAgree = worse(worstAgree, worse(minor, worse(abs(l1.dot(a1)), abs(l2.dot(a1)))));
+        for (int j = i + 1; j < 4; ++j) minor = maxOf(minor, abs(a1(i) * a2(j) - a1(j) * a2(i)));
+      worstAgree = maxOf(worstAgree, maxOf(minor, maxOf(abs(l1.dot(a1)), abs(l2.dot(a1)))));
       images.col(k) = a1;
     }
     c.checkResidual("centre a line of PR³: the solve and the cofactor formula give the same point of the line "
