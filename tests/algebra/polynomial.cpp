@@ -34,7 +34,7 @@ TEMPLATE_TEST_CASE("polynomial: real roots of products of known factors", "[poly
   CHECK(polynomialRoots(p).size() == 6);
 }
 
-TEMPLATE_TEST_CASE("polynomial: a double root is returned twice; a complex pair near the axis is not real",
+TEMPLATE_TEST_CASE("polynomial: a double root is returned twice — a complex pair near the axis is not real",
                    "[polynomial]", SOMA_TEST_SCALARS_FAST) {
   using S = TestType;
   using std::abs;

@@ -85,7 +85,7 @@ TEST_CASE("ik --png --svg: the PUMA 560's 8 postures, a panel each, titled with 
   CHECK(text.find("<polyline") != std::string::npos);
 }
 
-TEST_CASE("stewart --png and fk --svg: a panel per real posture; the robot at its joints", "[cli][figures]") {
+TEST_CASE("stewart --png and fk --svg: a panel per real posture — the robot at its joints", "[cli][figures]") {
   const std::string platform = soma::test::repoFile("studies/platforms/general.json").string();
   int rc = -1;
   const auto answer = nlohmann::json::parse(run("stewart " + platform + " --json", rc));

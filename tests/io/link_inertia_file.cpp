@@ -21,7 +21,7 @@ std::filesystem::path pumaDynamics() {
 }
 }  // namespace
 
-TEST_CASE("link inertia file: the PUMA 560 data parse; bad data is InvalidInput", "[io][dynamics][edge]") {
+TEST_CASE("link inertia file: the PUMA 560 data parse — bad data is InvalidInput", "[io][dynamics][edge]") {
   const auto links = readLinkInertias(pumaDynamics());
   REQUIRE(links.size() == 6);
   CHECK(links[1].mass() == 17.4);  // link 2 of the PUMA 560: 17.4 kg (Armstrong et al. 1986)

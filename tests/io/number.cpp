@@ -230,7 +230,7 @@ TEST_CASE("parseJson: nesting is refused beyond limits::maxDepth, before a recur
   CHECK_THROWS_WITH(parseJson(deep, "r.json"), StartsWith("r.json: base.a.a.a…: arrays and objects nested deeper than 64"));
 }
 
-TEST_CASE("readTextFile: bounded reads; a directory or an endless file is refused", "[io]") {
+TEST_CASE("readTextFile: bounded reads — a directory or an endless file is refused", "[io]") {
   CHECK_THROWS_WITH(readTextFile("/dev/zero", "robot"),
                     "/dev/zero: the robot file is larger than 16 MiB, the largest input soma reads");
   CHECK_THROWS_WITH(readTextFile("/", "robot"), "/: is a directory, not a robot file");

@@ -108,7 +108,7 @@ TEST_CASE("robot file: the joint count is bounded (limits::maxJoints), unknown k
                     "l.json: link 1: unknown field \"colour\" (a link has mass, com, inertia)");
 }
 
-TEMPLATE_TEST_CASE("platform file: the general platform; number errors with the key path", "[io][platform]",
+TEMPLATE_TEST_CASE("platform file: the general platform — number errors with the key path", "[io][platform]",
                    double, mpfr::mpreal) {
   using S = TestType;
   const StewartPlatform<S> P = readPlatform<S>(repoFile("studies/platforms/general.json"));

@@ -81,7 +81,7 @@ TEST_CASE("plot: a curve lands on the pixels its data map to, clipped to the axe
   CHECK(rgb(img, f.left - 30, py(f, 5)) == rgb8(palette::white));
 }
 
-TEST_CASE("plot: cells fill their rectangles, flat and unlit; log axes map decades evenly", "[render][plot]") {
+TEST_CASE("plot: cells fill their rectangles, flat and unlit — log axes map decades evenly", "[render][plot]") {
   Plot p;
   p.grid = false;
   PlotCells c;

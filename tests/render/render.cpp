@@ -405,7 +405,7 @@ TEST_CASE("render: a polyline through the eye plane is clipped at the near plane
   for (int y = 0; y < int(far.y()) - 3; ++y) CHECK(px(img, w / 2, y)[0] == 255);
 }
 
-TEST_CASE("render: two-sided surfaces light and tint their back faces; solids cull them", "[render]") {
+TEST_CASE("render: two-sided surfaces light and tint their back faces — solids cull them", "[render]") {
   const Camera below = Camera::ortho({0, 0, -5}, {0, 0, 0}, {0, 1, 0}, 2);  // sees the square's back
   const Camera above = topOrtho();
   Mesh m = square(0.5, {0, 0, 0}, palette::vermillion);  // normal +z

@@ -139,7 +139,7 @@ Eigen::Matrix<double, 6, 1> screwOf(const Eigen::Vector3d& q, const Eigen::Vecto
 
 }  // namespace
 
-TEST_CASE("example scene ur5_postures: every posture reproduces the pose; the pose's own joints among them", "[scene][examples]") {
+TEST_CASE("example scene ur5_postures: every posture reproduces the pose — the pose's own joints among them", "[scene][examples]") {
   const json scene = fileJson("examples/scenes/ur5_postures.json");
   const json out = runScene("ur5_postures.json")["postures"];
   CHECK(out["count"] == 8);  // the UR's 3 parallel axes: 8 postures (its expected count)
@@ -186,7 +186,7 @@ TEST_CASE("example scene wrist_rpy: the 2 postures of an RPY wrist (GF §5.1)", 
   CHECK(seed == 1);
 }
 
-TEST_CASE("example scene general6r: postures of a general 6R by its DH product; 16 complex", "[scene][examples]") {
+TEST_CASE("example scene general6r: postures of a general 6R by its DH product — 16 complex", "[scene][examples]") {
   const json out = runScene("general6r.json")["postures"];
   CHECK(out["expected_count"] == 16);
   CHECK(out["count"].get<int>() % 2 == 0);  // real postures of 16 complex come in an even number
@@ -242,7 +242,7 @@ M4 stewartKnownPosture() {
   return g;
 }
 
-TEST_CASE("example scene stewart_irregular: leg lengths of every posture; the made-from posture among them", "[scene][examples]") {
+TEST_CASE("example scene stewart_irregular: leg lengths of every posture — the made-from posture among them", "[scene][examples]") {
   const json out = runScene("stewart_irregular.json")["postures"];
   CHECK(out["certified"] == true);
   CHECK(out["count"].get<int>() % 2 == 0);  // 40 complex solutions: the real ones are even in number
@@ -320,7 +320,7 @@ TEST_CASE("example scene screw_system_ia1: a moved IA1 normal form is identified
 
 namespace SOMA_UNITY_ID {
 
-TEST_CASE("example scene cuspidal_3r_witness: 4 cusps; the witness's two postures reach one point", "[scene][examples]") {
+TEST_CASE("example scene cuspidal_3r_witness: 4 cusps — the witness's two postures reach one point", "[scene][examples]") {
   const json out = runScene("cuspidal_3r_witness.json")["verdict"];
   CHECK(out["cuspidal"] == true);
   CHECK(out["cusp_count"] == 4);  // Wenger's orthogonal 3R (1, 2, 1.5, 1, 0): 4 cusp points
@@ -466,7 +466,7 @@ TEST_CASE("example scene dynamics_puma_payload: at rest the torques hold the arm
   CHECK(num(all["loaded"]["momenta_cl062_residual"]) <= 1e-12);
 }
 
-TEST_CASE("example scene line_geometry: the regulus lies on x²+y²−z²=1; the pencil's pitches by brute force", "[scene][examples]") {
+TEST_CASE("example scene line_geometry: the regulus lies on x²+y²−z²=1 — the pencil's pitches by brute force", "[scene][examples]") {
   const json all = runScene("line_geometry.json");
   const io::SceneFile s = io::readScene(repoFile("examples/scenes/line_geometry.json"));
   const ThreeLineRegulus<double> r = io::sceneRegulus<double>(s, *s.entity("hyperboloid"));

@@ -79,7 +79,7 @@ TEST_CASE("scene graph: each node is built once across evaluations", "[scene][tr
   CHECK(ids(fk) == std::vector<std::string>{"fk:tool"});
 }
 
-TEST_CASE("scene graph: a needed output is built first; another scalar is another node", "[scene][trace]") {
+TEST_CASE("scene graph: a needed output is built first — another scalar is another node", "[scene][trace]") {
   SceneGraph g = graph();
   const SceneResult r = g.evaluate({"tool_q"});
   CHECK(ids(r) == std::vector<std::string>{"robot:arm[double]", "fk:tool", "robot:arm[float128]", "fk:tool_q"});

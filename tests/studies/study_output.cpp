@@ -89,7 +89,7 @@ TEST_CASE("study checks are written in the working scalar's digits and read back
   setMpfrBits(old);
 }
 
-TEST_CASE("a study that is not scalar-generic says why; a ladder study says it runs every rung", "[report][precision]") {
+TEST_CASE("a study that is not scalar-generic says why — a ladder study says it runs every rung", "[report][precision]") {
   Study d;
   d.id = "T-3";
   d.whyDouble = "OMPL is double only";

@@ -51,7 +51,7 @@ Eigen::Vector3d dhTranslation(const nlohmann::json& joints, const std::vector<do
 
 }  // namespace
 
-TEST_CASE("sweep: a grid's points, the first parameter slowest; random samples reproducible and in range", "[sweep]") {
+TEST_CASE("sweep: a grid's points, the first parameter slowest — random samples reproducible and in range", "[sweep]") {
   const io::SweepFile g = parse(cuspSweep(R"({"name": "a2", "key": "entities.robot.joints[1].a", "values": [1, 2, 3]},
                                             {"name": "a3", "key": "entities.robot.joints[2].a", "range": {"from": 0, "to": 1, "count": 5}})"));
   REQUIRE(g.points() == 15);
@@ -171,7 +171,7 @@ TEST_CASE("sweep: the UR5's 8 postures at each goal of a sweep, verified by the 
   }
 }
 
-TEST_CASE("sweep: rows as CSV and JSON Lines; a partial line is not a row", "[sweep]") {
+TEST_CASE("sweep: rows as CSV and JSON Lines — a partial line is not a row", "[sweep]") {
   const io::SweepFile s = example("cusps_orthogonal_3r.json");
   io::SweepRow row;
   row.point = 3;
@@ -192,7 +192,7 @@ TEST_CASE("sweep: rows as CSV and JSON Lines; a partial line is not a row", "[sw
   CHECK(io::sweepCsvLine(s, row) == "3,0.5,2,,,,1e-15,error,\"a, \"\"quoted\"\" message\",0.25\n");
 }
 
-TEST_CASE("sweep: rows read back exactly as written; a partial, foreign or out-of-range line is refused with its line", "[sweep]") {
+TEST_CASE("sweep: rows read back exactly as written — a partial, foreign or out-of-range line is refused with its line", "[sweep]") {
   const io::SweepFile s = example("cusps_orthogonal_3r.json");
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "soma-test-sweep-rows";
   std::filesystem::remove_all(dir);

@@ -39,7 +39,7 @@ TEST_CASE("analyseCuspidality: Verheye's arm is cuspidal — 4 cusps by both met
   CHECK(b.witness.path.empty());
 }
 
-TEST_CASE("analyseCuspidality: the PUMA arm is not cuspidal, nor is the PUMA 560 (decomposed; searched: no witness)",
+TEST_CASE("analyseCuspidality: the PUMA arm is not cuspidal, nor is the PUMA 560 (decomposed — searched: no witness)",
           "[cuspidal][entry]") {
   const CuspidalAnalysis a = analyseCuspidality(pumaArm());
   CHECK_FALSE(a.cuspidal);

@@ -143,7 +143,7 @@ TEST_CASE("cusps: random 3R arms, algebraic count = traced count", "[cuspidal]")
   CHECK(plain > 0);
 }
 
-TEST_CASE("cusps: decoupled arms have none (PUMA arm; axes 1, 2 meeting or parallel)", "[cuspidal]") {
+TEST_CASE("cusps: decoupled arms have none (PUMA arm — axes 1, 2 meeting or parallel)", "[cuspidal]") {
   // PUMA 560 joints 1–3, tool point at the wrist centre: axes 1, 2 meet.
   const auto puma = test::dh3r<double>(0, kHalfPi, 0, 0.4318, 0, 0, 0.0203, -kHalfPi, 0.15005);
   const CuspAnalysis<double> c = findCusps(puma);

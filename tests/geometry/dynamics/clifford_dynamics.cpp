@@ -100,7 +100,7 @@ TEMPLATE_TEST_CASE("Cl(0,6,2) and 6x6 formulations agree on random bodies and st
   }
 }
 
-TEMPLATE_TEST_CASE("free body: Cl(0,6,2) and 6x6 trajectories agree; drift of each", "[dynamics][clifford_dynamics]",
+TEMPLATE_TEST_CASE("free body: Cl(0,6,2) and 6x6 trajectories agree — drift of each", "[dynamics][clifford_dynamics]",
                    double, long double) {
   using S = TestType;
   const SpatialInertia<S> body(S(2), Vec3<S>(S(3) / S(10), S(-2) / S(10), S(1) / S(10)),

@@ -191,7 +191,7 @@ TEST_CASE("6R robot holding a pen on a table (GF §14.2.3): simulated 1 s, drift
   CHECK(e1 < 1e-3);
 }
 
-TEMPLATE_TEST_CASE("biped: vertical foot force by the corrected α = full multiplier system; printed α gives −λ_Rx (erratum 10)",
+TEMPLATE_TEST_CASE("biped: vertical foot force by the corrected α = full multiplier system — printed α gives −λ_Rx (erratum 10)",
                    "[constrained][biped]", float, double, long double, __float128, mpfr::mpreal) {
   using S = TestType;
   auto& g = rng(1424);
@@ -228,7 +228,7 @@ TEMPLATE_TEST_CASE("biped: vertical foot force by the corrected α = full multip
   CHECK_THROWS_AS(PlanarBiped<S>(bipedParameters<S>(), far), InvalidInput);
 }
 
-TEMPLATE_TEST_CASE("Stewart inverse dynamics: α elimination = 24 × 24 multipliers; massless legs reproduce the platform wrench",
+TEMPLATE_TEST_CASE("Stewart inverse dynamics: α elimination = 24 × 24 multipliers — massless legs reproduce the platform wrench",
                    "[constrained][stewart]", float, double, long double, __float128, mpfr::mpreal) {
   using S = TestType;
   auto& g = rng(1425);

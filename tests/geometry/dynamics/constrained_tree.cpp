@@ -98,7 +98,7 @@ template <class S> S torqueAlphaAsPrinted(const FourBarDynamics<S>& fb, const S&
 
 }  // namespace
 
-TEST_CASE("tree topology of Fig. 14.1: ancestry, partial order, nested form; cycles rejected", "[constrained][tree]") {
+TEST_CASE("tree topology of Fig. 14.1: ancestry, partial order, nested form — cycles rejected", "[constrained][tree]") {
   const TreeTopology t = TreeTopology::fromBookParents({0, 1, 1, 3, 3, 4});
   CHECK(t.ancestry(5) == std::vector<int>{0, 2, 3, 5});  // book: (1, 3, 4, 6)
   CHECK(t.precedes(2, 5));
@@ -129,7 +129,7 @@ TEMPLATE_TEST_CASE("tree up/down pass on a chain = serial RNE of GF §13.3", "[c
   }
 }
 
-TEMPLATE_TEST_CASE("branched tree (Fig. 14.1): recursive = joint equations = A θ̈ + bias; printed passes fail",
+TEMPLATE_TEST_CASE("branched tree (Fig. 14.1): recursive = joint equations = A θ̈ + bias — printed passes fail",
                    "[constrained][tree]", SOMA_TEST_SCALARS) {
   using S = TestType;
   auto& g = rng(1402);
@@ -253,7 +253,7 @@ TEST_CASE("4-bar torque = virtual work (power balance τθ̇₁ = dE_K/dt, 8th-o
   }
 }
 
-TEST_CASE("4-bar free motion: energy error of RK4 scales like h⁴; the 3-D DAE with projection keeps drift at rounding",
+TEST_CASE("4-bar free motion: energy error of RK4 scales like h⁴ — the 3-D DAE with projection keeps drift at rounding",
           "[constrained][fourbar][simulation]") {
   const FourBarDynamics<double> fb = crankRocker<double>();
   auto run = [&](double h, int steps) {

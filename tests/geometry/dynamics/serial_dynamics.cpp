@@ -281,7 +281,7 @@ TEMPLATE_TEST_CASE("serial dynamics: payload increments A^p, B^p, C^p (GF §13.2
   CHECK(worst <= tol * scale);
 }
 
-TEST_CASE("serial dynamics: forward dynamics inverts RNEA; Hamilton's equations match Lagrange's",
+TEST_CASE("serial dynamics: forward dynamics inverts RNEA — Hamilton's equations match Lagrange's",
           "[dynamics][serial]") {
   auto& g = rng(1336);
   const int n = 6;

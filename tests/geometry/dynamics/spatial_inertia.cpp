@@ -66,7 +66,7 @@ TEST_CASE("spatial inertia: translation by t_x is the printed parallel-axis matr
   REQUIRE((coadjointTransform(x, b.matrix()) - printed).cwiseAbs().maxCoeff() <= 1e-15);
 }
 
-TEMPLATE_TEST_CASE("coadjoint action is dual to the Lie bracket; equation of motion", "[dynamics]",
+TEMPLATE_TEST_CASE("coadjoint action is dual to the Lie bracket — equation of motion", "[dynamics]",
                    SOMA_TEST_SCALARS) {
   using S = TestType;
   auto& g = rng(1302);

@@ -76,7 +76,7 @@ TEMPLATE_TEST_CASE("Line: invalid input, Klein quadric membership, lines at infi
   REQUIRE_THROWS_AS(PluckerLine<S>(r), InvalidInput);
 }
 
-TEMPLATE_TEST_CASE("Line from two planes; parallel planes give the line at infinity (GF-6.3)", "[lines][line]", SOMA_TEST_SCALARS) {
+TEMPLATE_TEST_CASE("Line from two planes — parallel planes give the line at infinity (GF-6.3)", "[lines][line]", SOMA_TEST_SCALARS) {
   using S = TestType;
   auto& g = rng(13);
   for (int k = 0; k < 20; ++k) {

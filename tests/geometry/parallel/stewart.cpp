@@ -290,7 +290,7 @@ TEST_CASE("Stewart ceres and nlopt: real postures only, each one of the homotopy
   }
 }
 
-TEST_CASE("Stewart ceres: impossible leg lengths give no posture and a note; bad input is rejected",
+TEST_CASE("Stewart ceres: impossible leg lengths give no posture and a note — bad input is rejected",
           "[stewart][numeric]") {
   auto& g = test::rng(1159);
   SE3<double> pose;
@@ -363,7 +363,7 @@ TEMPLATE_TEST_CASE("StewartPlatform::cast: to a wider scalar and back is exact",
   }
 }
 
-TEST_CASE("solveStewart: general 6-6 platform, 40 complex by homotopy; ceres and nlopt find a subset, polished in "
+TEST_CASE("solveStewart: general 6-6 platform, 40 complex by homotopy — ceres and nlopt find a subset, polished in "
           "long double", "[stewart][entry]") {
   const auto P = generalPlatform<double>();
   const StewartSolution<double> h = solveStewart(P);

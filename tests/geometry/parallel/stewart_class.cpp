@@ -25,7 +25,7 @@ template <class S> StewartPlatform<S> randomGeneral(std::mt19937_64& g, bool pla
 template <class S> S tolOf(const StewartPlatform<S>& P) { return Tolerance<S>::sqrtEpsilon() * stewartScale<S>(P); }
 }  // namespace
 
-TEMPLATE_TEST_CASE("Stewart class: 6-6 general and planar, 40; planarity decided at tol on both sides",
+TEMPLATE_TEST_CASE("Stewart class: 6-6 general and planar, 40 — planarity decided at tol on both sides",
                    "[stewart][stewart_class]", float, double, long double) {
   using S = TestType;
   std::mt19937_64 g(21);
@@ -58,7 +58,7 @@ TEMPLATE_TEST_CASE("Stewart class: 6-6 general and planar, 40; planarity decided
   }
 }
 
-TEMPLATE_TEST_CASE("Stewart class: 6-3 and 3-6 have 16; coincidence decided at tol on both sides",
+TEMPLATE_TEST_CASE("Stewart class: 6-3 and 3-6 have 16 — coincidence decided at tol on both sides",
                    "[stewart][stewart_class]", float, double, long double) {
   using S = TestType;
   std::mt19937_64 g(63);
@@ -86,7 +86,7 @@ TEMPLATE_TEST_CASE("Stewart class: 6-3 and 3-6 have 16; coincidence decided at t
   CHECK(co.expected_count == 32);  // 6-4 with two pairs (SOMA-11.5-stewart-classes: homotopy and PHCpack)
 }
 
-TEMPLATE_TEST_CASE("Stewart class: 3-3 octahedral has 16; a 3-3 with two legs on one joint pair is singular",
+TEMPLATE_TEST_CASE("Stewart class: 3-3 octahedral has 16 — a 3-3 with two legs on one joint pair is singular",
                    "[stewart][stewart_class]", float, double, long double) {
   using S = TestType;
   std::mt19937_64 g(33);

@@ -91,7 +91,7 @@ TEST_CASE("Stewart classes 6-5, 6-4, 5-5, 4-4: the class's count, certified, the
   }
 }
 
-TEMPLATE_TEST_CASE("Stewart 6-5: a joint pair coincident or a few ulps apart is 6-5; 10·√eps·size apart, 6-6",
+TEMPLATE_TEST_CASE("Stewart 6-5: a joint pair coincident or a few ulps apart is 6-5 — 10·√eps·size apart, 6-6",
                    "[stewart][stewart_class]", float, double, long double) {
   using S = TestType;
   auto& g = test::rng(65);
@@ -330,7 +330,7 @@ template <class S> StewartPlatform<S> standardHexapod(double wb, double wq, doub
 }
 }  // namespace
 
-TEST_CASE("Stewart standard hexapod (planar, 3-fold symmetric): 28, certified; symmetry decided at tol, both sides",
+TEST_CASE("Stewart standard hexapod (planar, 3-fold symmetric): 28, certified — symmetry decided at tol, both sides",
           "[stewart][stewart_class]") {
   for (const double phase : {0.0, 7.0}) {
     INFO("phase " << phase);

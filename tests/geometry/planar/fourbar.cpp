@@ -179,7 +179,7 @@ TEMPLATE_TEST_CASE("circuits: one branch through a full cycle, continuous and cl
   }
 }
 
-TEST_CASE("crank-rocker keeps its assembly mode; triple-rocker flips it only at the crank limits", "[planar][fourbar][circuits]") {
+TEST_CASE("crank-rocker keeps its assembly mode — triple-rocker flips it only at the crank limits", "[planar][fourbar][circuits]") {
   using S = double;
   const FourBar<S> cr(Vec2<S>(0, 0), Vec2<S>(3, 0), 1.2, 2.5, 2.0);
   CHECK(cr.classify().crankRotates);

@@ -82,7 +82,7 @@ TEMPLATE_TEST_CASE("(P1)–(P4) from (ω…, r…) equal the jet's point derivat
   }
 }
 
-TEMPLATE_TEST_CASE("inflection circle: det[ṗ, p̈] = ω²·(p − r)ᵀ(ω(p − r) − 2E₂ṙ); Ball's point is an undulation",
+TEMPLATE_TEST_CASE("inflection circle: det[ṗ, p̈] = ω²·(p − r)ᵀ(ω(p − r) − 2E₂ṙ) — Ball's point is an undulation",
                    "[planar][invariants]", SOMA_TEST_SCALARS) {
   using S = TestType;
   auto& g = rng(503);

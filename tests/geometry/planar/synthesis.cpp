@@ -110,7 +110,7 @@ TEMPLATE_TEST_CASE("four positions: the centre-point curve is a circular cubic t
   }
 }
 
-TEST_CASE("five positions from random 4-bars: the Burmester pairs contain the original pivots; the rebuilt 4-bar passes "
+TEST_CASE("five positions from random 4-bars: the Burmester pairs contain the original pivots — the rebuilt 4-bar passes "
           "through all five positions (success rate, worst error)",
           "[planar][synthesis][round-trip]") {
   auto& g = rng(603);

@@ -45,7 +45,7 @@ template <class S> S maxAbsAll(const std::vector<DgMatrix<S>>& a) {
 }
 }  // namespace
 
-TEMPLATE_TEST_CASE("GF §15.1: Q0, Qinf and every Q_p are ad-invariant; a pitch-p screw is Q_p-null", "[riemannian][metric]",
+TEMPLATE_TEST_CASE("GF §15.1: Q0, Qinf and every Q_p are ad-invariant — a pitch-p screw is Q_p-null", "[riemannian][metric]",
                    SOMA_TEST_SCALARS) {
   using S = TestType;
   auto& g = rng(1501);
@@ -66,7 +66,7 @@ TEMPLATE_TEST_CASE("GF §15.1: Q0, Qinf and every Q_p are ad-invariant; a pitch-
   CHECK_THROWS_AS((InvariantMetric<S>{S(0), S(1)}.nullPitch()), InvalidInput);
 }
 
-TEMPLATE_TEST_CASE("GF §15.1/§15.3: nabla = ½[,] is torsion-free and metric; R = ¼[[X,Y],Z]; Q(R(X,Y)Z,W) = ¼Q([X,Y],[Z,W])",
+TEMPLATE_TEST_CASE("GF §15.1/§15.3: nabla = ½[,] is torsion-free and metric — R = ¼[[X,Y],Z] — Q(R(X,Y)Z,W) = ¼Q([X,Y],[Z,W])",
                    "[riemannian][metric]", SOMA_TEST_SCALARS) {
   using S = TestType;
   auto& g = rng(1502);

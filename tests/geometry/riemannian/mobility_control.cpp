@@ -63,7 +63,7 @@ TEMPLATE_TEST_CASE("GF §15.2 Table 15.1: ten screw systems, each closed under t
   CHECK_THROWS_AS(table15_1<S>(S(0)), InvalidInput);
 }
 
-TEMPLATE_TEST_CASE("GF §15.2: planar and spherical 4R have m = n − dim Δ∞ = 1; the Bennett loop has mobility 1 although "
+TEMPLATE_TEST_CASE("GF §15.2: planar and spherical 4R have m = n − dim Δ∞ = 1 — the Bennett loop has mobility 1 although "
                    "Kutzbach and the completion group give −2",
                    "[riemannian][mobility]", double, long double, __float128) {
   using S = TestType;
@@ -97,7 +97,7 @@ TEMPLATE_TEST_CASE("GF §15.2: planar and spherical 4R have m = n − dim Δ∞ 
   CHECK(traceLoop<S>(bent, S(1) / S(20), 5).kernelDimension == 0);
 }
 
-TEMPLATE_TEST_CASE("GF §15.3: the velocity-tracking law's twist error decays as e^{-λt}; geodesic law keeps the twist",
+TEMPLATE_TEST_CASE("GF §15.3: the velocity-tracking law's twist error decays as e^{-λt} — geodesic law keeps the twist",
                    "[riemannian][control]", double, long double) {
   using S = TestType;
   auto& g = rng(1530);
@@ -146,7 +146,7 @@ TEMPLATE_TEST_CASE("GF §15.3: the velocity-tracking law's twist error decays as
   CHECK((accP.back().twist - ca.gamma * accP.back().t * ca.sd).cwiseAbs().maxCoeff() > S(1e-2));
 }
 
-TEMPLATE_TEST_CASE("GF §15.4.3: dual-basis projectors are idempotent and complementary; transformation laws hold",
+TEMPLATE_TEST_CASE("GF §15.4.3: dual-basis projectors are idempotent and complementary — transformation laws hold",
                    "[riemannian][hybrid]", SOMA_TEST_SCALARS) {
   using S = TestType;
   auto& g = rng(1540);
@@ -182,7 +182,7 @@ TEMPLATE_TEST_CASE("GF §15.4.3: dual-basis projectors are idempotent and comple
   CHECK_THROWS_AS(dualBasisProjectors<S>(Z, Sp), InvalidInput);
 }
 
-TEMPLATE_TEST_CASE("GF §15.4.3 peg in hole: AB = diag(0,0,1,0,0,1), XY = diag(1,1,0,1,1,0); shifted origin (erratum E15.8)",
+TEMPLATE_TEST_CASE("GF §15.4.3 peg in hole: AB = diag(0,0,1,0,0,1), XY = diag(1,1,0,1,1,0) — shifted origin (erratum E15.8)",
                    "[riemannian][hybrid]", SOMA_TEST_SCALARS) {
   using S = TestType;
   DgMatrix<S> Z = DgMatrix<S>::Zero(6, 2), Sp = DgMatrix<S>::Zero(6, 4);
@@ -210,7 +210,7 @@ TEMPLATE_TEST_CASE("GF §15.4.3 peg in hole: AB = diag(0,0,1,0,0,1), XY = diag(1
   CHECK(maxAbs<S>(DgMatrix<S>(pt.motionProjector() - ABt)) <= tol);
 }
 
-TEMPLATE_TEST_CASE("GF §15.4.4: N6-orthonormal projectors; the pinned body's reaction is N6 II(V,V)", "[riemannian][hybrid]",
+TEMPLATE_TEST_CASE("GF §15.4.4: N6-orthonormal projectors — the pinned body's reaction is N6 II(V,V)", "[riemannian][hybrid]",
                    SOMA_TEST_SCALARS) {
   using S = TestType;
   auto& g = rng(1544);

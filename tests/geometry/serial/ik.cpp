@@ -95,7 +95,7 @@ TEMPLATE_TEST_CASE("solveIk: PUMA 560, 8 postures, each reaching the pose, certi
   CHECK(subset<S>(again, sol, Tolerance<S>::sqrtEpsilon()));
 }
 
-TEMPLATE_TEST_CASE("solveIk: general 6R, 10 real of 16 certified; ceres finds the same 10, not certified",
+TEMPLATE_TEST_CASE("solveIk: general 6R, 10 real of 16 certified — ceres finds the same 10, not certified",
                    "[serial][ik][entry][sixr]", double, long double) {
   using S = TestType;
   const auto robot = test::general6rExample<S>();

@@ -23,7 +23,7 @@ SerialRobot<double> wrist(const double (&lo)[3], const double (&hi)[3]) {
 }
 }  // namespace
 
-TEST_CASE("shiftIntoLimits: θ + 2πk into limits off (−π, π], refused where no multiple fits", "[serial][limits]") {
+TEST_CASE("shiftIntoLimits: θ + 2πk into limits off −π < θ ≤ π, refused where no multiple fits", "[serial][limits]") {
   const SerialRobot<double> r = wrist({-190, -1, -170}, {45, 215, 170});
   auto at = [](double a, double b, double c) { return JointVector<double>(Eigen::Vector3d(deg(a), deg(b), deg(c))); };
   // Inside already: unchanged.

@@ -172,7 +172,7 @@ TEST_CASE("solveRedundantIk: the traced family agrees with the Jacobian's null s
   }
 }
 
-TEST_CASE("redundancySweepValues: the joint's limits, or (−π, π] without limits", "[serial][redundant]") {
+TEST_CASE("redundancySweepValues: the joint's limits, or −π < θ ≤ π without limits", "[serial][redundant]") {
   const SerialRobot<double> f = franka<double>();
   const std::vector<double> v = redundancySweepValues(f, 6, 5);
   REQUIRE(v.size() == 5);

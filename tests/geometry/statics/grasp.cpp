@@ -67,7 +67,7 @@ TEMPLATE_TEST_CASE("linear program: a textbook optimum, infeasible, unbounded, b
   CHECK_THROWS_AS(minimiseLinearProgram<S>(c, A2, b2), InvalidInput);
 }
 
-TEMPLATE_TEST_CASE("GF-12.5 positive spanning: e₁…e₆, −Σe has margin 1/(6 + √6); both sides of the boundary",
+TEMPLATE_TEST_CASE("GF-12.5 positive spanning: e₁…e₆, −Σe has margin 1/(6 + √6) — both sides of the boundary",
                    "[statics][closure]", SOMA_TEST_SCALARS) {
   using S = TestType;
   using std::sqrt;

@@ -73,7 +73,7 @@ template <class S> SE3<S> rotationAbout(const Vec3<S>& axis, const S& angle, con
 template <class S> Vec8<S> study(const SE3<S>& g) { return StudyParameters<S>::fromSE3(g).coeffs(); }
 }  // namespace
 
-TEMPLATE_TEST_CASE("sphereConstraintQuadric: vanishes exactly on the leg's motions; equals the book's leg expression",
+TEMPLATE_TEST_CASE("sphereConstraintQuadric: vanishes exactly on the leg's motions — equals the book's leg expression",
                    "[study][quadric]", SOMA_TEST_SCALARS) {
   using S = TestType;
   using std::abs, std::cos, std::sin, std::sqrt;
@@ -99,7 +99,7 @@ TEMPLATE_TEST_CASE("sphereConstraintQuadric: vanishes exactly on the leg's motio
   }
 }
 
-TEST_CASE("Leg quadrics: Wampler's differences lose the c-c block; all contain the quadric at infinity", "[study][quadric]") {
+TEST_CASE("Leg quadrics: Wampler's differences lose the c-c block — all contain the quadric at infinity", "[study][quadric]") {
   auto& g = rng(22);
   using S = double;
   const Mat8<S> Q1 = sphereConstraintQuadric<S>(uniformVec<S, 3>(g), uniformVec<S, 3>(g), 1.3);

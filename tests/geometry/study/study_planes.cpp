@@ -29,7 +29,7 @@ template <class S> Vec8<S> study(const SE3<S>& g) { return StudyParameters<S>::f
 template <class S> S tol() { return Tolerance<S>::identity(256); }
 }  // namespace
 
-TEMPLATE_TEST_CASE("StudyPlane: x = M y planes lie in the quadric; det M gives A or B", "[study][plane]", SOMA_TEST_SCALARS) {
+TEMPLATE_TEST_CASE("StudyPlane: x = M y planes lie in the quadric — det M gives A or B", "[study][plane]", SOMA_TEST_SCALARS) {
   using S = TestType;
   using std::abs, std::cos, std::sin, std::sqrt;
   auto& g = rng(11);
@@ -47,7 +47,7 @@ TEMPLATE_TEST_CASE("StudyPlane: x = M y planes lie in the quadric; det M gives A
     }
 }
 
-TEMPLATE_TEST_CASE("StudyPlane: SO(3)_p is the Cayley plane diag(1, Cay(p)); SE(2)_n the half-turn plane", "[study][plane]",
+TEMPLATE_TEST_CASE("StudyPlane: SO(3)_p is the Cayley plane diag(1, Cay(p)) — SE(2)_n the half-turn plane", "[study][plane]",
                    SOMA_TEST_SCALARS) {
   using S = TestType;
   using std::abs, std::cos, std::sin, std::sqrt;
