@@ -5,11 +5,10 @@
 // has its file length, and the real assembly modes soma finds are the real solutions PHCpack finds
 // for the same platform. Double (PHCpack's).
 #include "soma/geometry/parallel/stewart.hpp"
-#include "soma/geometry/study/constraint_quadrics.hpp"
 #include "soma/io/platform_file.hpp"
 #include "soma/render/render.hpp"
-#include "soma/studies/phc_runner.hpp"
 #include "soma/studies/study.hpp"
+#include "stewart_phc.hpp"
 
 #include <fmt/format.h>
 
@@ -115,43 +114,15 @@ void figure111(Context& c) {
   // its real regular solutions off the exceptional plane a = 0.
   std::mt19937_64 g(111);
   std::uniform_real_distribution<double> u(-1, 1);
-  const std::vector<std::string> x8 = {"a0", "a1", "a2", "a3", "c0", "c1", "c2", "c3"};
-  auto quadric = [&](const Mat8<S>& Q) {
-    std::string t;
-    for (int i = 0; i < 8; ++i)
-      for (int j = i; j < 8; ++j)
-        if (Q(i, j) != 0) t += fmt::format(" {}*{}*{}", phcNumber(Q(i, j) * (i == j ? 1.0 : 2.0)), x8[std::size_t(i)], x8[std::size_t(j)]);
-    return t + ";";
-  };
-  std::vector<std::string> eqs;
-  for (int i = 0; i < 6; ++i) eqs.push_back(quadric(sphereConstraintQuadric<S>(P.base[std::size_t(i)], P.platform[std::size_t(i)], P.legs[std::size_t(i)])));
-  eqs.push_back(quadric(studyQuadricMatrix<S>()));
-  std::string chart;
-  for (int i = 0; i < 8; ++i) chart += fmt::format(" {}*{}", phcNumber(u(g)), x8[std::size_t(i)]);
-  eqs.push_back(chart + " - 1;");
-  const PhcResult run = solveWithPhc(eqs, x8, "fig111");
-  std::vector<Eigen::Matrix<double, 8, 1>> phcReal;
-  int finite = 0;
-  for (const auto& sol : run.solutions) {
-    if (!sol.regular || !(sol.x.head<4>().norm() > 1e-8 * sol.x.norm())) continue;
-    ++finite;
-    Eigen::Index k = 0;
-    sol.x.cwiseAbs().maxCoeff(&k);
-    const Eigen::VectorXcd y = sol.x / sol.x(k);
-    if (y.imag().cwiseAbs().maxCoeff() <= 1e-8) phcReal.push_back(y.real());
-  }
-  c.note(fmt::format("PHCpack: {} paths, {} regular finite solutions, {} real; {:.1f} s.", run.paths, finite, phcReal.size(), run.seconds));
-  c.checkEqual("PHCpack: regular finite solutions (independent count, 40)", 40, finite);
-  c.checkEqual("real assembly modes drawn (soma) = PHCpack's real solutions", static_cast<long long>(phcReal.size()),
+  Eigen::VectorXd chart(8);
+  for (Eigen::Index i = 0; i < 8; ++i) chart(i) = u(g);
+  const PhcResult run = solveWithPhc(stewart_phc::equations(P, chart), stewart_phc::studyNames(), "fig111");
+  const auto phc = stewart_phc::classify(run);
+  c.note(fmt::format("PHCpack: {} paths, {} regular finite solutions, {} real; {:.1f} s.", run.paths, phc.finite, phc.real.size(), run.seconds));
+  c.checkEqual("PHCpack: regular finite solutions (independent count, 40)", 40, phc.finite);
+  c.checkEqual("real assembly modes drawn (soma) = PHCpack's real solutions", static_cast<long long>(phc.real.size()),
                static_cast<long long>(s.count()));
-  double worstMatch = 0;
-  for (const auto& h : s.postures) {
-    const Eigen::Matrix<double, 8, 1> x = StudyParameters<S>::fromSE3(h).coeffs();
-    double best = 1;
-    for (const auto& y : phcReal) best = std::min(best, std::max(0.0, 1 - std::pow(x.dot(y), 2) / (x.squaredNorm() * y.squaredNorm())));
-    worstMatch = std::max(worstMatch, best);
-  }
-  c.checkResidual("every drawn mode is one of PHCpack's real solutions (1 − cos² in PR⁷)", worstMatch, 1e-12);
+  c.checkResidual("every drawn mode is one of PHCpack's real solutions (1 − cos² in PR⁷)", stewart_phc::worstMatch(s.postures, phc.real), 1e-12);
   if (c.makeFigures() && s.count() > 0) {
     // Show the mode whose platform sits highest above the base (the figure's upright pose).
     std::size_t shown = 0;

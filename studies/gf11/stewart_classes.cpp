@@ -11,7 +11,7 @@
 #include "soma/geometry/study/constraint_quadrics.hpp"
 #include "soma/studies/study.hpp"
 
-#include "soma/studies/phc_runner.hpp"
+#include "stewart_phc.hpp"
 
 #include <fmt/format.h>
 
@@ -79,23 +79,15 @@ struct PhcJob {
   int compare = 0;
 };
 PhcJob phcJob(const StewartPlatform<S>& P, std::mt19937_64& g, const std::string& tag, int compare) {
-  const std::vector<std::string> x8 = {"a0", "a1", "a2", "a3", "c0", "c1", "c2", "c3"};
-  PhcJob job{{}, tag, compare};
-  for (int i = 0; i < 6; ++i) job.equations.push_back(phcQuadric(sphereConstraintQuadric<S>(P.base[i], P.platform[i], P.legs[i]), x8));
-  job.equations.push_back(phcQuadric(studyQuadricMatrix<S>(), x8));
   Eigen::VectorXd w(8);
   for (Eigen::Index i = 0; i < 8; ++i) w(i) = uni(g, -1, 1);
-  job.equations.push_back(phcLinear(w, x8, 1.0));
-  return job;
+  return PhcJob{stewart_phc::equations(P, w), tag, compare};
 }
 PhcCount phcCount(const PhcJob& job) {
-  const std::vector<std::string> x8 = {"a0", "a1", "a2", "a3", "c0", "c1", "c2", "c3"};
   PhcCount out;
   for (const std::string opt : {"-b -0", "-b2 -0"}) {
-    const PhcResult run = solveWithPhc(job.equations, x8, job.tag, opt);
-    int finite = 0;
-    for (const PhcSolution& sol : run.solutions)
-      if (sol.regular && sol.x.head<4>().norm() > Tolerance<S>::sqrtEpsilon() * sol.x.norm()) ++finite;
+    const PhcResult run = solveWithPhc(job.equations, stewart_phc::studyNames(), job.tag, opt);
+    const int finite = stewart_phc::classify(run).finite;
     out.finite = finite;
     out.seconds += run.seconds;
     out.how = "phc " + opt;
