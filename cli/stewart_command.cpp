@@ -12,6 +12,7 @@
 #include "soma/geometry/parallel/solve_stewart.hpp"
 #include "soma/io/json_number.hpp"
 #include "soma/io/platform_file.hpp"
+#include "soma/io/stewart_json.hpp"
 #include "soma/io/pose_file.hpp"
 
 #include <fmt/format.h>
@@ -35,13 +36,6 @@ json pointsJson(const auto& pts) {
 }
 
 
-/// [re, im] in the digits of S.
-template <class S> json complexJson(const std::complex<S>& z) { return json::array({io::jsonNumber(z.real()), io::jsonNumber(z.imag())}); }
-template <class S, std::size_t N> json complexArray(const std::array<std::complex<S>, N>& v) {
-  json a = json::array();
-  for (const auto& z : v) a.push_back(complexJson(z));
-  return a;
-}
 template <class S> std::string complexText(const std::complex<S>& z) {
   return fmt::format("{}{}{}i", io::numberText(z.real()), z.imag() < S(0) ? "-" : "+", io::numberText(z.imag() < S(0) ? -z.imag() : z.imag()));
 }
@@ -85,28 +79,8 @@ int stewartImpl(const std::filesystem::path& file, StewartMethod method, bool js
     j["count"] = sol.count();
     j["paths_tracked"] = sol.paths_tracked;
     j["notes"] = sol.notes;
-    json arr = json::array();
-    for (std::size_t k = 0; k < sol.count(); ++k) {
-      json posture = io::poseJson(sol.postures[k]);
-      posture["residual"] = io::jsonNumber(sol.residuals[k]);
-      posture["multiplicity"] = k < sol.posture_multiplicity.size() ? sol.posture_multiplicity[k] : 1;
-      arr.push_back(std::move(posture));
-    }
-    j["solutions"] = arr;
-    if (complex_) {
-      json cs = json::array();
-      for (const auto& c : sol.complex_postures) {
-        json e;
-        e["rotation"] = complexArray(c.rotation);
-        e["translation"] = complexArray(c.translation);
-        e["study"] = complexArray(c.study);
-        e["real"] = c.real;
-        e["multiplicity"] = c.multiplicity;
-        e["residual"] = io::jsonNumber(stewartComplexResidual<S>(P, c));
-        cs.push_back(std::move(e));
-      }
-      j["complex_solutions"] = cs;
-    }
+    j["solutions"] = io::stewartPosturesJson(sol);
+    if (complex_) j["complex_solutions"] = io::stewartComplexSolutionsJson(P, sol);
     out << jsonText(j) << "\n";
     return ok ? 0 : 1;
   }

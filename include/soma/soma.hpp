@@ -142,6 +142,7 @@
 #include <soma/io/robot_file.hpp>
 #include <soma/io/scene_file.hpp>
 #include <soma/io/scene_output.hpp>
+#include <soma/io/stewart_json.hpp>
 #include <soma/io/sweep_file.hpp>
 #include <soma/io/urdf_file.hpp>
 

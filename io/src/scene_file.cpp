@@ -198,9 +198,13 @@ SceneOutput parseOutput(const std::string& name, const json& j, const std::strin
       o.joints = j["joints"].dump();
       break;
     case SceneOutputKind::Stewart:
-      checkKeys(j, {"kind", "platform", "method", "scalar", "bits", "needs"}, where.str(),
-                "(a stewart output has platform, method, scalar, bits, needs)");
+      checkKeys(j, {"kind", "platform", "method", "complex", "scalar", "bits", "needs"}, where.str(),
+                "(a stewart output has platform, method, complex, scalar, bits, needs)");
       o.platform = entityRef(j, "platform", where);
+      if (j.contains("complex")) {
+        if (!j["complex"].is_boolean()) throw InvalidInput(where.key("complex").str() + ": expected true or false");
+        o.complex = j["complex"].get<bool>();
+      }
       break;
     case SceneOutputKind::Cylindroid: {
       checkKeys(j, {"kind", "screws", "cylindroid", "scalar", "bits", "needs"}, where.str(),
@@ -339,6 +343,9 @@ SceneOutput parseOutput(const std::string& name, const json& j, const std::strin
     throw InvalidInput(where.key("method").str() + ": " + inQuotes(o.method) + " is not one of " + ikMethodNames());
   if (o.kind == SceneOutputKind::Stewart && !parseStewartMethod(o.method))
     throw InvalidInput(where.key("method").str() + ": " + inQuotes(o.method) + " is not one of " + stewartMethodNames());
+  if (o.kind == SceneOutputKind::Stewart && o.complex && *parseStewartMethod(o.method) != StewartMethod::Homotopy)
+    throw InvalidInput(where.key("complex").str() + ": only the homotopy finds the complex solutions (method " +
+                       inQuotes(o.method) + ")");
   if (j.contains("scalar")) {
     const std::string s = stringField(j, "scalar", where);
     const auto k = parseScalarKind(s);

@@ -4,6 +4,7 @@
 
 #include "soma/io/json_number.hpp"
 #include "soma/io/pose_file.hpp"
+#include "soma/io/stewart_json.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -65,24 +66,26 @@ std::string fkOutputJson(const SceneOutput& o, const RobotFile<S>& rf, const Joi
   return j.dump();
 }
 
-template <class S> std::string stewartOutputJson(const SceneOutput& o, const StewartSolution<S>& sol, bool ok) {
+template <class S>
+std::string stewartOutputJson(const SceneOutput& o, const StewartPlatform<S>& P, const StewartSolution<S>& sol, bool ok) {
   S worst(0);
   for (const S& r : sol.residuals)
     if (r > worst) worst = r;
   nlohmann::json j = outputHead<S>(o, sol.method, sol.seconds, worst, ok);
   j["platform"] = o.platform;
+  const bool homotopy = sol.method == "homotopy";
+  if (homotopy) {
+    j["class"] = sol.platform_class;
+    j["pattern"] = sol.pattern;
+  }
   j["expected_count"] = sol.expected_count;
   j["complex_count"] = sol.complexCount();
+  if (homotopy) j["distinct_complex_count"] = sol.distinctCount();
   j["certified"] = sol.certified;
   j["count"] = sol.count();
   j["notes"] = sol.notes;
-  nlohmann::json arr = nlohmann::json::array();
-  for (std::size_t k = 0; k < sol.count(); ++k) {
-    nlohmann::json p = poseJson(sol.postures[k]);
-    p["residual"] = jsonNumber(sol.residuals[k]);
-    arr.push_back(p);
-  }
-  j["solutions"] = arr;
+  j["solutions"] = stewartPosturesJson(sol);
+  if (o.complex) j["complex_solutions"] = stewartComplexSolutionsJson(P, sol);
   return j.dump();
 }
 
@@ -121,7 +124,7 @@ std::string screwSystemOutputJson(const SceneOutput& o, const ScrewSystemIdentif
   template std::string ikOutputJson<S>(const SceneOutput&, const RobotFile<S>&, const IkSolution<S>&, bool); \
   template std::string fkOutputJson<S>(const SceneOutput&, const RobotFile<S>&, const JointVector<S>&,     \
                                        const SE3<S>&, double);                                          \
-  template std::string stewartOutputJson<S>(const SceneOutput&, const StewartSolution<S>&, bool);          \
+  template std::string stewartOutputJson<S>(const SceneOutput&, const StewartPlatform<S>&, const StewartSolution<S>&, bool);          \
   template std::string cylindroidOutputJson<S>(const SceneOutput&, const Cylindroid<S>&, const S&, double, bool); \
   template std::string screwSystemOutputJson<S>(const SceneOutput&, const ScrewSystemIdentification<S>&, double, bool); }
 

@@ -187,8 +187,14 @@ class StewartResult:
     """Every real posture of a Stewart platform for its leg lengths (solveStewart).
 
     ``postures`` is a list of 4x4 matrices (float64, or object arrays of mpmath.mpf);
-    ``poses()`` gives them as SE3 (double). ``complex_count`` is the number of the 40 complex
-    solutions the homotopy found (-1 for the numerical methods)."""
+    ``poses()`` gives them as SE3 (double). ``complex_count`` is the number of complex solutions
+    the homotopy found, counted with multiplicity (-1 for the numerical methods), and
+    ``expected_count`` the count of the platform's class (``platform_class``, e.g. "6-6", "6-3";
+    ``pattern`` its leg–joint incidence); ``multiplicities`` gives each real posture's (2 for a
+    double root on the boundary of the assembly space). With ``solve(complex=True)``,
+    ``complex_solutions`` lists every complex solution as a dict: ``translation`` (3 complex),
+    ``rotation`` (the quaternion, 4 complex, a·a = 1), ``real`` and ``multiplicity`` (complex for
+    float and double, mpmath.mpc for the other scalars)."""
     postures: list
     residuals: list
     seconds: float
@@ -201,6 +207,11 @@ class StewartResult:
     paths_tracked: int
     paths_failed: int
     notes: List[str] = field(default_factory=list)
+    distinct_complex_count: int = -1
+    multiplicities: list = field(default_factory=list)
+    platform_class: str = ""
+    pattern: str = ""
+    complex_solutions: list = field(default_factory=list)
 
     @property
     def count(self):
@@ -437,10 +448,10 @@ class Platform:
     def residual(self, pose):
         return self._h.residual(pose if isinstance(pose, SE3) else SE3(_np.asarray(pose, dtype=float)))
 
-    def solve(self, method="homotopy", scalar="double", bits=256, starts=256, seed=1):
+    def solve(self, method="homotopy", scalar="double", bits=256, starts=256, seed=1, complex=False):
         """Forward kinematics: every real posture for the leg lengths. homotopy tracks all 40
         complex solutions (certified count); ceres and nlopt are multi-start searches."""
-        return StewartResult(**self._h._solve(method, scalar, bits, starts, seed))
+        return StewartResult(**self._h._solve(method, scalar, bits, starts, seed, complex))
 
     def __repr__(self):
         return repr(self._h)

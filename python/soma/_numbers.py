@@ -16,6 +16,13 @@ def mpf(text, prec):
         return mpmath.mpf(text)
 
 
+def mpc(re_text, im_text, prec):
+    """A complex result as an mpmath.mpc whose parts keep ``prec`` bits (mpmath.mpc(re, im) would
+    round them to the current context's precision)."""
+    with mpmath.workprec(prec):
+        return mpmath.mpc(mpf(re_text, prec), mpf(im_text, prec))
+
+
 def text(x, where):
     """Decimal text of a Python number other than float (floats are converted exactly in C++)."""
     if isinstance(x, str):

@@ -6,10 +6,13 @@
 #include "soma/algebra/errors.hpp"
 #include "soma/geometry/parallel/solve_stewart.hpp"
 #include "soma/geometry/parallel/stewart.hpp"
+#include "soma/io/json_number.hpp"
 #include "soma/io/platform_file.hpp"
 #include "soma/io/pose_file.hpp"
 
 #include <fmt/format.h>
+
+#include <complex>
 
 namespace soma::python {
 
@@ -24,16 +27,33 @@ struct PlatformHandle {
   }
 };
 
-template <class S> py::dict solveIn(const PlatformHandle& h, StewartMethod method, int starts, std::uint64_t seed) {
+/// A complex result number: a Python complex for float and double, an mpmath.mpc carrying every
+/// digit of S for the other scalars.
+template <class S> py::object complexNumber(const std::complex<S>& z) {
+  if constexpr (std::is_same_v<S, double> || std::is_same_v<S, float>)
+    return py::cast(std::complex<double>(double(z.real()), double(z.imag())));
+  else
+    return py::module_::import("soma._numbers")
+        .attr("mpc")(io::numberText(z.real()), io::numberText(z.imag()), significandBits<S>());
+}
+template <class S, std::size_t N> py::list complexList(const std::array<std::complex<S>, N>& v) {
+  py::list l;
+  for (const auto& z : v) l.append(complexNumber<S>(z));
+  return l;
+}
+
+template <class S>
+py::dict solveIn(const PlatformHandle& h, StewartMethod method, int starts, std::uint64_t seed, bool complexOut) {
   StewartOptions o;
   o.method = method;
   o.numeric.starts = starts;
   o.numeric.seed = seed;
   const StewartSolution<S> sol = solveStewart<S>(h.in<S>(), o);
-  py::list postures, residuals;
+  py::list postures, residuals, multiplicities;
   for (std::size_t k = 0; k < sol.count(); ++k) {
     postures.append(numbers<S>(sol.postures[k].matrix()));
     residuals.append(number<S>(sol.residuals[k]));
+    multiplicities.append(k < sol.posture_multiplicity.size() ? sol.posture_multiplicity[k] : 1);
   }
   py::dict d;
   d["postures"] = postures;
@@ -44,6 +64,24 @@ template <class S> py::dict solveIn(const PlatformHandle& h, StewartMethod metho
   d["scalar"] = std::string(scalarName<S>());
   d["expected_count"] = sol.expected_count;
   d["complex_count"] = method == StewartMethod::Homotopy ? int(sol.complexCount()) : -1;
+  d["distinct_complex_count"] = method == StewartMethod::Homotopy ? sol.distinctCount() : -1;
+  d["multiplicities"] = multiplicities;
+  d["platform_class"] = sol.platform_class;
+  d["pattern"] = sol.pattern;
+  if (complexOut) {
+    // Every complex solution (as `soma stewart --complex`): translation t and rotation quaternion a
+    // (a·a = 1) in the user's frame, whether it is real, its multiplicity.
+    py::list cs;
+    for (const auto& c : sol.complex_postures) {
+      py::dict e;
+      e["translation"] = complexList<S>(c.translation);
+      e["rotation"] = complexList<S>(c.rotation);
+      e["real"] = c.real;
+      e["multiplicity"] = c.multiplicity;
+      cs.append(e);
+    }
+    d["complex_solutions"] = cs;
+  }
   d["certified"] = sol.certified;
   d["paths_tracked"] = sol.paths_tracked;
   d["paths_failed"] = sol.paths_failed;
@@ -102,11 +140,14 @@ void bindParallel(py::module_& m) {
            })
       .def("_solve",
            [](const PlatformHandle& h, const std::string& method, const std::string& scalar, int bits, int starts,
-              std::uint64_t seed) {
+              std::uint64_t seed, bool complexOut) {
              const auto mm = parseStewartMethod(method);
              if (!mm) throw InvalidInput("stewart: method \"" + method + "\" is not one of " + stewartMethodNames());
              if (starts < 1) throw InvalidInput("stewart: starts must be at least 1, got " + std::to_string(starts));
-             return withScalar(scalarArgument(scalar, bits), [&]<class S>() { return solveIn<S>(h, *mm, starts, seed); });
+             if (complexOut && *mm != StewartMethod::Homotopy)
+               throw InvalidInput("stewart: complex=True: only the homotopy finds the complex solutions (method \"homotopy\")");
+             return withScalar(scalarArgument(scalar, bits),
+                               [&]<class S>() { return solveIn<S>(h, *mm, starts, seed, complexOut); });
            })
       .def("__repr__", [](const PlatformHandle& h) { return "Platform(from " + h.origin + ")"; });
   m.def("stewart_methods", [] { return stewartMethodNames(); });

@@ -148,7 +148,7 @@ template <class S> OutputResult SceneGraph::compute(const io::SceneOutput& o, co
       options.method = *m;
       const StewartSolution<S> sol = solveStewart<S>(P, options);
       for (const S& e : sol.residuals) r.ok = r.ok && withinSqrtEps(e);
-      r.json = io::stewartOutputJson<S>(o, sol, r.ok);
+      r.json = io::stewartOutputJson<S>(o, P, sol, r.ok);
       for (const SE3<S>& g : sol.postures) r.poses.push_back(SE3<double>(SO3<double>::fromMatrix(castMatrix<double>(Mat3<S>(g.rotation()))),
                                                                         castMatrix<double>(Vec3<S>(g.translation()))));
       break;

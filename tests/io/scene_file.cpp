@@ -49,6 +49,7 @@ const BadFile kBadFiles[] = {
     {"bad_dynamics_steps.json", "outputs.d.steps: expected an integer in [1, 100000]"},
     {"bad_dynamics_gravity.json", "outputs.d.gravity: "},
     {"bad_figure_png_svg.json", "outputs.f: give \"png\" or \"svg\", not both"},
+    {"bad_stewart_complex.json", "outputs.s.complex: expected true or false"},
 };
 
 const std::string kRobots = R"("arm": {"kind": "robot", "file": "studies/robots/puma560.json"},
@@ -82,6 +83,9 @@ TEST_CASE("scene file: references, kinds and cycles are checked before anything 
                     "scene.json: outputs.a.needs[0]: no output named \"zz\"");
   CHECK_THROWS_WITH(scene(R"("c": {"kind": "cylindroid", "screws": ["arm", "goal"]})"),
                     "scene.json: outputs.c.screws[0]: \"arm\" is a robot, expected a screw");
+  CHECK_THROWS_WITH(scene(R"("s": {"kind": "stewart", "platform": "p", "method": "ceres", "complex": true})",
+                          R"("p": {"kind": "platform", "file": "studies/platforms/general.json"})"),
+                    "scene.json: outputs.s.complex: only the homotopy finds the complex solutions (method \"ceres\")");
   // nlohmann would keep the second "arm": a scene rejects the repeat (and a repeated output name).
   CHECK_THROWS_WITH(scene(R"("solve": {"kind": "ik", "robot": "arm", "pose": "goal"})",
                           kRobots + R"(, "arm": {"kind": "point", "at": [0, 0, 0]})"),

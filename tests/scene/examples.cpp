@@ -10,6 +10,7 @@
 #include "support/repo_file.hpp"
 
 #include <catch2/catch.hpp>
+#include <complex>
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
@@ -246,7 +247,34 @@ TEST_CASE("example scene stewart_irregular: leg lengths of every posture — the
   const json out = runScene("stewart_irregular.json")["postures"];
   CHECK(out["certified"] == true);
   CHECK(out["count"].get<int>() % 2 == 0);  // 40 complex solutions: the real ones are even in number
-  checkLegs(out, fileJson("examples/scenes/stewart_irregular.json")["entities"]["hexapod"], stewartKnownPosture());
+  const json P = fileJson("examples/scenes/stewart_irregular.json")["entities"]["hexapod"];
+  checkLegs(out, P, stewartKnownPosture());
+  // "complex": true: the 40 complex solutions (GF §11.5.4), each on the six leg quadrics in complex
+  // arithmetic — (R(a) qᵢ + t − pᵢ)·(R(a) qᵢ + t − pᵢ) = Lᵢ² (bilinear), R(a) written out here for
+  // a = (w, x, y, z), a·a = 1 — to 1024 ε (1 + |t|)² (the terms' size; the conversion's ~100 roundings).
+  CHECK(out["class"] == "6-6");
+  CHECK(out["complex_count"] == 40);
+  REQUIRE(out["complex_solutions"].size() == 40);
+  using C = std::complex<double>;
+  auto cx = [](const json& v) { return C(double(v[0]), double(v[1])); };
+  int real = 0;
+  for (const auto& e : out["complex_solutions"]) {
+    const C w = cx(e["rotation"][0]), x = cx(e["rotation"][1]), y = cx(e["rotation"][2]), z = cx(e["rotation"][3]);
+    Eigen::Matrix3cd R;
+    R << 1. - 2. * (y * y + z * z), 2. * (x * y - w * z), 2. * (x * z + w * y), 2. * (x * y + w * z), 1. - 2. * (x * x + z * z),
+        2. * (y * z - w * x), 2. * (x * z - w * y), 2. * (y * z + w * x), 1. - 2. * (x * x + y * y);
+    const Eigen::Vector3cd t(cx(e["translation"][0]), cx(e["translation"][1]), cx(e["translation"][2]));
+    const double size = 1 + t.cwiseAbs().maxCoeff();
+    for (int i = 0; i < 6; ++i) {
+      Eigen::Vector3d b, p;
+      for (int k = 0; k < 3; ++k) b(k) = P["base"][i][k], p(k) = P["platform"][i][k];
+      const Eigen::Vector3cd u = R * p.cast<C>() + t - b.cast<C>();
+      const double L = P["leg_lengths"][i];
+      CHECK(std::abs(u.dot(u.conjugate()) - C(L * L)) <= 1024 * std::numeric_limits<double>::epsilon() * size * size);
+    }
+    real += e["real"].get<bool>();
+  }
+  CHECK(real == out["count"].get<int>());
 }
 
 TEST_CASE("example scene stewart_numeric: ceres postures polished in long double keep the leg lengths", "[scene][examples]") {

@@ -113,6 +113,7 @@ struct SceneOutput {
   std::vector<std::string> draw;      ///< figure: the entities drawn (empty: every entity)
   int width = 1200, height = 900;     ///< figure: the image size in pixels
   bool witness = true;                ///< cuspidal: plan a witness path when cuspidal
+  bool complex = false;               ///< stewart: also every complex solution (as soma stewart --complex)
   int samples = 200000, grid = 120;   ///< workspace: postures sampled, cells per side of the maps
   std::string from, to;               ///< dynamics: the trajectory's end postures (JSON text, read only by io)
   double duration = 1, gravity = 9.81;  ///< dynamics: seconds from rest to rest, g along −z (m/s²)

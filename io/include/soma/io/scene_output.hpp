@@ -24,7 +24,9 @@ std::string ikOutputJson(const SceneOutput& o, const RobotFile<S>& robot, const 
 template <class S>
 std::string fkOutputJson(const SceneOutput& o, const RobotFile<S>& robot, const JointVector<S>& q, const SE3<S>& pose,
                          double seconds);
-template <class S> std::string stewartOutputJson(const SceneOutput& o, const StewartSolution<S>& sol, bool ok);
+/// complex_solutions too when o.complex (the homotopy's).
+template <class S>
+std::string stewartOutputJson(const SceneOutput& o, const StewartPlatform<S>& P, const StewartSolution<S>& sol, bool ok);
 template <class S>
 std::string cylindroidOutputJson(const SceneOutput& o, const Cylindroid<S>& c, const S& residual, double seconds, bool ok);
 
@@ -87,7 +89,8 @@ std::string figureOutputJson(const SceneOutput& o, const std::vector<std::string
   extern template std::string ikOutputJson<S>(const SceneOutput&, const RobotFile<S>&, const IkSolution<S>&, bool); \
   extern template std::string fkOutputJson<S>(const SceneOutput&, const RobotFile<S>&, const JointVector<S>&,    \
                                               const SE3<S>&, double);                                         \
-  extern template std::string stewartOutputJson<S>(const SceneOutput&, const StewartSolution<S>&, bool);        \
+  extern template std::string stewartOutputJson<S>(const SceneOutput&, const StewartPlatform<S>&,                \
+                                                  const StewartSolution<S>&, bool);                            \
   extern template std::string cylindroidOutputJson<S>(const SceneOutput&, const Cylindroid<S>&, const S&, double, bool); \
   extern template std::string screwSystemOutputJson<S>(const SceneOutput&, const ScrewSystemIdentification<S>&, double, bool);
 SOMA_FOR_EACH_SCALAR(SOMA_SCENE_OUTPUT_EXTERN)
