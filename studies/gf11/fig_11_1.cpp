@@ -112,11 +112,7 @@ void figure111(Context& c) {
                   64 * Tolerance<S>::epsilon() * 2);
   // Independent: PHCpack on the same platform (six leg quadrics, the Study quadric, a random chart),
   // its real regular solutions off the exceptional plane a = 0.
-  std::mt19937_64 g(111);
-  std::uniform_real_distribution<double> u(-1, 1);
-  Eigen::VectorXd chart(8);
-  for (Eigen::Index i = 0; i < 8; ++i) chart(i) = u(g);
-  const PhcResult run = solveWithPhc(stewart_phc::equations(P, chart), stewart_phc::studyNames(), "fig111");
+  const PhcResult run = solveWithPhc(stewart_phc::equations(P, stewart_phc::randomChart(111)), stewart_phc::studyNames(), "fig111");
   const auto phc = stewart_phc::classify(run);
   c.note(fmt::format("PHCpack: {} paths, {} regular finite solutions, {} real; {:.1f} s.", run.paths, phc.finite, phc.real.size(), run.seconds));
   c.checkEqual("PHCpack: regular finite solutions (independent count, 40)", 40, phc.finite);

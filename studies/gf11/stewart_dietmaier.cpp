@@ -46,11 +46,7 @@ void fortyReal(Context& c) {
   // Independent: PHCpack's blackbox on the same equations. A posture matches a PHCpack solution when
   // 1 − cos² ≤ 1e-12 (an angle of 1e-6 in PR⁷; both are polished to ~1e-15, distinct postures here
   // are ≥ 0.011 apart: the check above).
-  std::mt19937_64 g(1998);
-  std::uniform_real_distribution<double> u(-1, 1);
-  Eigen::VectorXd chart(8);
-  for (Eigen::Index i = 0; i < 8; ++i) chart(i) = u(g);
-  const PhcResult run = solveWithPhc(stewart_phc::equations(P, chart), stewart_phc::studyNames(), "dietmaier");
+  const PhcResult run = solveWithPhc(stewart_phc::equations(P, stewart_phc::randomChart(1998)), stewart_phc::studyNames(), "dietmaier");
   const auto phc = stewart_phc::classify(run);
   c.note(fmt::format("PHCpack: {} paths, {} regular finite solutions, {} real; {:.1f} s. soma: {:.1f} ms.", run.paths,
                      phc.finite, phc.real.size(), run.seconds, 1e3 * s.seconds));

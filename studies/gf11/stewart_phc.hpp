@@ -12,6 +12,8 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <cstdint>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -20,6 +22,15 @@ namespace soma::studies::stewart_phc {
 inline const std::vector<std::string>& studyNames() {
   static const std::vector<std::string> x8 = {"a0", "a1", "a2", "a3", "c0", "c1", "c2", "c3"};
   return x8;
+}
+
+/// A random affine chart w (entries uniform in [−1, 1], from `seed`).
+inline Eigen::VectorXd randomChart(std::uint64_t seed) {
+  std::mt19937_64 g(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  Eigen::VectorXd w(8);
+  for (Eigen::Index i = 0; i < 8; ++i) w(i) = u(g);
+  return w;
 }
 
 /// The 8 equations in PHCpack's syntax: six legs, the Study quadric, the chart w·x = 1.
