@@ -55,7 +55,7 @@ template <class S> void stewartBench(benchmark::State& st, StewartTracking track
   std::vector<StewartPlatform<S>> ps;
   for (const auto& p : pool()) ps.push_back(p.template cast<S>());
   (void)stewartStartSolutions<S>();  // the start system, once per process, outside the timing
-  std::size_t i = 0, calls = 0, complete = 0, real = 0, paths = 0, fast = 0;
+  std::size_t i = 0, calls = 0, complete = 0, real = 0, paths = 0, fast = 0, steps = 0;
   double worst = 0;
   std::vector<double> cpu;  // per-platform CPU seconds: the median is robust to the rare escalation
   for (auto _ : st) {
@@ -66,6 +66,7 @@ template <class S> void stewartBench(benchmark::State& st, StewartTracking track
     complete += sol.complexCount() == 40;
     real += sol.count();
     paths += static_cast<std::size_t>(sol.paths_tracked);
+    steps += static_cast<std::size_t>(sol.steps);
     fast += sol.tracker == "fast";
     worst = std::max(worst, toDouble(sol.worstResidual()));
     ++calls;
@@ -74,6 +75,7 @@ template <class S> void stewartBench(benchmark::State& st, StewartTracking track
   st.counters["complete(40)"] = double(complete) / double(calls);
   st.counters["real/platform"] = double(real) / double(calls);
   st.counters["paths/platform"] = double(paths) / double(calls);
+  st.counters["steps/path"] = double(steps) / double(paths);
   st.counters["fast_tracker"] = double(fast) / double(calls);
   st.counters["worst_residual"] = worst;
   std::sort(cpu.begin(), cpu.end());

@@ -129,7 +129,7 @@ struct Homotopy {
   }
   /// f = H(x, τ), J = ∂H/∂x and ft = ∂H/∂τ (GF-11.5.4-stewart-leg-quadric: u = a q + 2c − p a,
   /// u₀ = −a_v·d + 2c₀, u_v = a₀ d + a_v × s + 2c_v; leg i is u·u − L² a·a).
-  void eval(const At& A, const V8& x, V8& f, M8& J, V8& ft) const {
+  void eval(const At& A, const V8& x, V8& f, M8& J, V8& ft, bool wantFt = true) const {
     const Cx aa = x[0] * x[0] + x[1] * x[1] + x[2] * x[2] + x[3] * x[3];
     f[0] = x[0] * x[4] + x[1] * x[5] + x[2] * x[6] + x[3] * x[7];
     for (int k = 0; k < 4; ++k) {
@@ -155,6 +155,7 @@ struct Homotopy {
       row[5] = 4.0 * u1;
       row[6] = 4.0 * u2;
       row[7] = 4.0 * u3;
+      if (!wantFt) continue;
       const Leg& g = leg[i];
       const Cx du0 = -(x[1] * g.dd[0] + x[2] * g.dd[1] + x[3] * g.dd[2]);
       const Cx du1 = x[0] * g.dd[0] + (x[2] * g.ds[2] - x[3] * g.ds[1]);
@@ -203,8 +204,10 @@ struct Settings {
 /// tracker's time).
 inline V8 hermite(int n, const double* T, const V8* X, const V8* V, double t) {
   const int m = 2 * n;
-  double z[6], wx[3], wv[3];
+  double z[6], wx[3], wv[3], inv[6][6];
   for (int j = 0; j < m; ++j) z[j] = T[j / 2];
+  for (int k = 1; k < m; ++k)
+    for (int j = k; j < m; ++j) inv[k][j] = z[j] == z[j - k] ? 0.0 : 1.0 / (z[j] - z[j - k]);
   for (int b = 0; b < m; ++b) {
     const bool deriv = b % 2 == 1;
     double q[6];
@@ -212,9 +215,8 @@ inline V8 hermite(int n, const double* T, const V8* X, const V8* V, double t) {
     // q[j] ← f[z_{j−k}, …, z_j] for k = 1 … m − 1, from the bottom up; f[z, z] = f'(z).
     for (int k = 1; k < m; ++k)
       for (int j = m - 1; j >= k; --j) {
-        const double dz = z[j] - z[j - k];
-        if (k == 1 && dz == 0) q[j] = deriv && j / 2 == b / 2 ? 1.0 : 0.0;
-        else q[j] = (q[j] - q[j - 1]) / dz;
+        if (k == 1 && j % 2 == 1) q[j] = deriv && j / 2 == b / 2 ? 1.0 : 0.0;  // z[j] = z[j − 1]
+        else q[j] = (q[j] - q[j - 1]) * inv[k][j];
       }
     double r = q[m - 1];
     for (int j = m - 2; j >= 0; --j) r = q[j] + (t - z[j]) * r;
@@ -236,7 +238,7 @@ inline Path track(const Homotopy& H, const V8& start, const Settings& o) {
   const double eps = Tolerance<double>::epsilon();
   const double hmin = Tolerance<double>::sqrtEpsilon();
   V8 f, ft;
-  M8 J;
+  M8 J, J2;
   std::array<int, 8> piv;
   // History: the last three accepted points, oldest first.
   double T[3];
@@ -272,10 +274,19 @@ inline Path track(const Homotopy& H, const V8& start, const Settings& o) {
     const Homotopy::At A = H.at(tn);
     double first = 0, prev = 0;
     bool ok = false;
+    int last = 0;
+    // Newton with the Jacobian of the predicted point only (one LU a step): the later iterations
+    // reuse its LU (the "simplified" Newton, contraction ~ cond · first, as fast as Newton's second
+    // step); their Jacobian J2 refines the tangent below.
     for (int it = 0; it < 3; ++it) {
-      H.eval(A, y, f, J, ft);
-      ++r.lus;
-      if (!(factor(J, piv) > 0)) break;
+      last = it;
+      if (it == 0) {
+        H.eval(A, y, f, J, ft, false);  // ∂H/∂τ is needed at the last iterate only
+        ++r.lus;
+        if (!(factor(J, piv) > 0)) break;
+      } else {
+        H.eval(A, y, f, J2, ft);
+      }
       solve(J, piv, f);
       for (int k = 0; k < 8; ++k) y[k] = y[k] - f[k];
       const double scale = std::max(1.0, maxNorm(y));
@@ -296,10 +307,21 @@ inline Path track(const Homotopy& H, const V8& start, const Settings& o) {
     // The predictor's order: Hermite through n points is exact to degree 2n − 1, error O(h^(2n)).
     const double expo = 1.0 / double(2 * n);
     if (ok) {
-      // The tangent at the new point, from the last LU (taken at the point before the last
-      // correction, ≤ accept away: a tangent good to that relative size).
+      // The tangent at the new point: J⁻¹(−∂H/∂τ) with the LU of the predicted point, refined once
+      // with the Jacobian J2 of the last iterate (error ~ (cond · first)², and ≤ accept away from
+      // the new point).
+      if (last == 0) H.eval(A, y, f, J2, ft);  // accepted at once (rare): ∂H/∂τ at the new point
       for (auto& z : ft) z = -z;
-      solve(J, piv, ft);
+      V8 v = ft;
+      solve(J, piv, v);
+      if (last > 0) {
+        V8 res = ft;
+        for (int i = 0; i < 8; ++i)
+          for (int k = 0; k < 8; ++k) res[i] = res[i] - J2[i][k] * v[k];
+        solve(J, piv, res);
+        for (int k = 0; k < 8; ++k) v[k] = v[k] + res[k];
+      }
+      ft = v;
       push(tn, y, ft);
       t = tn;
       double g = 2;

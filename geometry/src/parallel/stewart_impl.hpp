@@ -666,7 +666,7 @@ template <class S> std::string sci(const S& v) {
 /// 0): true with the 40 endpoints in `ends` when every path reached a finite nonsingular endpoint
 /// and the 40 are distinct (within dupTol); otherwise false and a note saying what was wrong.
 inline bool fastTrack(const ParameterHomotopy<double>& hom, const std::vector<X<double>>& starts,
-                      std::vector<X<double>>& ends, std::string& why) {
+                      std::vector<X<double>>& ends, std::string& why, int& steps) {
   namespace F = stewart_fast;
   F::Homotopy H;
   for (int i = 0; i < 6; ++i) {
@@ -689,6 +689,7 @@ inline bool fastTrack(const ParameterHomotopy<double>& hom, const std::vector<X<
     F::V8 x0;
     for (int k = 0; k < 8; ++k) x0[k] = F::cx(s[k]);
     const F::Path r = F::track(H, x0, o);
+    steps += r.steps;
     X<double> x;
     for (int k = 0; k < 8; ++k) x[k] = {r.x[k].re, r.x[k].im};
     if (!r.finite) {
@@ -758,7 +759,7 @@ StewartForwardSolution<S> forwardCore(const StewartPlatform<S>& user, bool fine,
       hom.gamma = gammaOf<S>(1);
       std::string why;
       out.paths_tracked += static_cast<int>(starts.size());
-      if (fastTrack(hom, starts, finite, why)) {
+      if (fastTrack(hom, starts, finite, why, out.steps)) {
         todo.clear();
         out.tracker = "fast";
       } else {
@@ -795,6 +796,7 @@ StewartForwardSolution<S> forwardCore(const StewartPlatform<S>& user, bool fine,
     for (int k : todo) {
       ++out.paths_tracked;
       const PathResult<S> r = trackPath<S>(hom, starts[k], o);
+      out.steps += r.steps;
       const bool infinite = maxNormA<S>(r.x) <= Tolerance<S>::sqrtEpsilon() * maxNorm<S>(r.x);
       if (r.end == PathEnd::Finite && !infinite) {
         bool dup = false;

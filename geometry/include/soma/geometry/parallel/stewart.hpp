@@ -102,6 +102,8 @@ template <class S> struct StewartForwardSolution {
   int expected_count = 40;
   /// Paths tracked in total (40 on the plain path; more when some were re-tracked).
   int paths_tracked = 0;
+  /// Predictor–corrector steps over all paths tracked (accepted and rejected).
+  int steps = 0;
   /// Paths that did not reach a finite nonsingular endpoint on the last attempt.
   int paths_failed = 0;
   /// Paths tracked again in a wider scalar (0 when none; a note says which and why): float's failed
