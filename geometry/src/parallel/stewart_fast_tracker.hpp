@@ -182,8 +182,8 @@ struct Path {
 };
 
 /// Step control of the fast tracker (relative to max(1, |x|∞)), chosen on the 32 platforms of
-/// bench/stewart.cpp (papers/benchmarks/stewart.md: predErr 1.2e-4 → 7.4e-4 → 2.5e-3 gave 93 → 71 →
-/// 56 steps a path; accepting after one Newton step, or at 1.2e-4, lost paths):
+/// bench/stewart.cpp (papers/benchmarks/stewart.md: larger targets took fewer steps up to ~2.5e-3;
+/// accepting after one Newton step, or at 1.2e-4, lost paths):
 struct Settings {
   /// the predictor's target error (the first Newton correction): eps^(1/6) ≈ 2.5e-3;
   double predErr = Tolerance<double>::precision(5);
