@@ -197,30 +197,23 @@ struct Settings {
   int maxSteps = 2000;
 };
 
-/// Hermite extrapolation through n ≤ 3 points (τ_j, x_j) with tangents v_j, evaluated at t:
-/// Newton's divided differences on the doubled nodes τ₀, τ₀, τ₁, τ₁, …; the interpolant is linear in
-/// the data, so its weights (x_j ↦ wx_j, v_j ↦ wv_j) are computed once, on unit data, and the eight
-/// coordinates are then eight sums (the divided differences of every coordinate cost 18 % of the
-/// tracker's time).
+/// Hermite extrapolation through n ≤ 3 points (τ_j, x_j) with tangents v_j, evaluated at t: with
+/// the Lagrange basis l_j of the nodes, x(t) = Σ_j [1 − 2 l_j'(τ_j)(t − τ_j)] l_j(t)² x_j
+/// + (t − τ_j) l_j(t)² v_j, l_j'(τ_j) = Σ_{m≠j} 1/(τ_j − τ_m). The weights are scalars, computed
+/// once; the eight coordinates are then sums.
 inline V8 hermite(int n, const double* T, const V8* X, const V8* V, double t) {
-  const int m = 2 * n;
-  double z[6], wx[3], wv[3], inv[6][6];
-  for (int j = 0; j < m; ++j) z[j] = T[j / 2];
-  for (int k = 1; k < m; ++k)
-    for (int j = k; j < m; ++j) inv[k][j] = z[j] == z[j - k] ? 0.0 : 1.0 / (z[j] - z[j - k]);
-  for (int b = 0; b < m; ++b) {
-    const bool deriv = b % 2 == 1;
-    double q[6];
-    for (int j = 0; j < m; ++j) q[j] = !deriv && j / 2 == b / 2 ? 1.0 : 0.0;
-    // q[j] ← f[z_{j−k}, …, z_j] for k = 1 … m − 1, from the bottom up; f[z, z] = f'(z).
-    for (int k = 1; k < m; ++k)
-      for (int j = m - 1; j >= k; --j) {
-        if (k == 1 && j % 2 == 1) q[j] = deriv && j / 2 == b / 2 ? 1.0 : 0.0;  // z[j] = z[j − 1]
-        else q[j] = (q[j] - q[j - 1]) * inv[k][j];
-      }
-    double r = q[m - 1];
-    for (int j = m - 2; j >= 0; --j) r = q[j] + (t - z[j]) * r;
-    (deriv ? wv : wx)[b / 2] = r;
+  double wx[3], wv[3];
+  for (int j = 0; j < n; ++j) {
+    double l = 1, dl = 0;
+    for (int m = 0; m < n; ++m) {
+      if (m == j) continue;
+      const double inv = 1.0 / (T[j] - T[m]);
+      l *= (t - T[m]) * inv;
+      dl += inv;
+    }
+    const double l2 = l * l, dt = t - T[j];
+    wx[j] = (1 - 2 * dl * dt) * l2;
+    wv[j] = dt * l2;
   }
   V8 out;
   for (int c = 0; c < 8; ++c) {
