@@ -3,13 +3,14 @@
 // parameter homotopy as stewart_impl.hpp's general tracker (start platform, γ, chart h·x = 1, the
 // leg quadrics and the Study quadric), its 40 paths tracked in double by a tracker written for
 // speed only:
-//   - hand-written complex arithmetic (GCC's std::complex<double> product tests its result for NaN
-//     and calls __muldc3, its quotient always calls __divdc3),
+//   - hand-written complex arithmetic (std::complex<double>'s product follows C99 Annex G: it tests
+//     its result for NaN and may call __muldc3; its quotient calls __divdc3),
 //   - fixed-size storage, the platform at τ formed once per τ (not once per evaluation),
-//   - ONE LU per Newton step and no other: the tangent dx/dτ = −J⁻¹ ∂H/∂τ at an accepted point
-//     reuses the LU of its last Newton step, and the predictor is the Hermite interpolant through
-//     the last three accepted points and their tangents (degree 5, local error O(h⁶)), extrapolated
-//     to τ + h; the general tracker's RK4 needs four extra LUs per step.
+//   - ONE LU per step and no other: the Newton iterations after the first reuse the first's LU
+//     (simplified Newton), the tangent dx/dτ = −J⁻¹ ∂H/∂τ at the accepted point comes from that LU
+//     refined once with the last Jacobian, and the predictor is the Hermite interpolant through the
+//     last three accepted points and their tangents (degree 5, local error O(h⁶)), extrapolated to
+//     τ + h; the general tracker's RK4 factors four more Jacobians per step (and each Newton one).
 // It is double only (that is its purpose: the ≤ 1 ms median of issue 21); every other scalar, and
 // double whenever this tracker is in doubt (a path that fails, ends singular or at infinity, or two
 // endpoints that coincide), uses the general tracker, and solveStewartForward says so in its notes.
