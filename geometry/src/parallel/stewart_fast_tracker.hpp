@@ -183,17 +183,24 @@ struct Path {
 };
 
 /// Step control of the fast tracker (relative to max(1, |x|∞)), chosen on the 32 platforms of
-/// bench/stewart.cpp (papers/benchmarks/stewart.md: larger targets took fewer steps up to ~2.5e-3;
-/// accepting after one Newton step, or at 1.2e-4, lost paths):
+/// bench/stewart.cpp (papers/benchmarks/stewart.md: 64 steps a path at target 2.5e-3 and three
+/// simplified Newton iterations, 53.6 at 5.8e-3 with the fourth and the refactoring; accepting
+/// after one Newton step, or at 1.2e-4, lost paths):
 struct Settings {
-  /// the predictor's target error (the first Newton correction): eps^(1/6) ≈ 2.5e-3;
-  double predErr = Tolerance<double>::precision(5);
+  /// the predictor's target error (the first Newton correction): eps^(1/7) ≈ 5.8e-3;
+  double predErr = Tolerance<double>::precision(6);
   /// a step is accepted when a Newton correction falls below this (the point is then exact to
   /// ~ its square: 1e-12 and below): eps^(1/3) ≈ 6e-6;
   double accept = Tolerance<double>::precision(2);
   /// a step is rejected when the first correction exceeds this multiple of predErr (the
   /// prediction left the path's neighbourhood: Newton might converge to another path);
   double rejectFactor = 8;
+  /// Newton iterations a step at most; from the third on, the Jacobian is factored afresh when the
+  /// last iteration contracted by less than this factor (the simplified Newton converges linearly,
+  /// at a rate ~ cond · first: with the predictor's target above ~2e-3 it alone did not reach
+  /// `accept` in three iterations on many steps, which were then rejected);
+  int maxIterations = 4;
+  double refactorRate = 1.0 / 16;
   double hmax = 0.25, hstart = 0.05;
   int maxSteps = 2000;
 };
@@ -269,10 +276,12 @@ inline Path track(const Homotopy& H, const V8& start, const Settings& o) {
     double first = 0, prev = 0;
     bool ok = false;
     int last = 0;
-    // Newton with the Jacobian of the predicted point only (one LU a step): the later iterations
+    // Newton with the Jacobian of the predicted point (one LU a step, mostly): the later iterations
     // reuse its LU (the "simplified" Newton, contraction ~ cond · first, as fast as Newton's second
-    // step); their Jacobian J2 refines the tangent below.
-    for (int it = 0; it < 3; ++it) {
+    // step; refactored when it converges slowly, see Settings); their Jacobian J2 refines the
+    // tangent below.
+    double rate = 0;  // the last iteration's contraction
+    for (int it = 0; it < o.maxIterations; ++it) {
       last = it;
       if (it == 0) {
         H.eval(A, y, f, J, ft, false);  // ∂H/∂τ is needed at the last iterate only
@@ -280,6 +289,11 @@ inline Path track(const Homotopy& H, const V8& start, const Settings& o) {
         if (!(factor(J, piv) > 0)) break;
       } else {
         H.eval(A, y, f, J2, ft);
+        if (it >= 2 && rate > o.refactorRate) {  // slow linear convergence: a full Newton step
+          J = J2;
+          ++r.lus;
+          if (!(factor(J, piv) > 0)) break;
+        }
       }
       solve(J, piv, f);
       for (int k = 0; k < 8; ++k) y[k] = y[k] - f[k];
@@ -289,8 +303,9 @@ inline Path track(const Homotopy& H, const V8& start, const Settings& o) {
       if (it == 0) {
         first = dn;
         if (dn > o.rejectFactor * o.predErr) break;
-      } else if (dn > prev / 4) {
-        break;  // not contracting fast: too far from the path for a safe Newton
+      } else {
+        rate = dn / prev;
+        if (dn > prev / 4) break;  // not contracting fast: too far from the path for a safe Newton
       }
       prev = dn;
       if (dn <= o.accept) {
