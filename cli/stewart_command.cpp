@@ -74,6 +74,7 @@ int stewartImpl(const std::filesystem::path& file, StewartMethod method, bool js
       j["complex_count"] = sol.complexCount();
       j["distinct_complex_count"] = sol.distinctCount();
       j["paths_escalated"] = sol.paths_escalated;
+      j["tracker"] = sol.tracker;
     }
     j["certified"] = sol.certified;
     j["count"] = sol.count();

@@ -29,7 +29,7 @@ template <class S> StewartSolution<S> solveStewart(const StewartPlatform<S>& P, 
     const auto s0 = std::chrono::steady_clock::now();
     (void)stewartStartSolutions<S>();
     sol.start_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count();
-    static_cast<StewartForwardSolution<S>&>(sol) = solveStewartForward<S>(P, options.fineTracking);
+    static_cast<StewartForwardSolution<S>&>(sol) = solveStewartForward<S>(P, options.fineTracking ? StewartTracking::Fine : StewartTracking::Auto);
     char secs[32];
     std::snprintf(secs, sizeof secs, "%.3g", sol.start_seconds);
     sol.notes.push_back(std::string("start system (40 solutions of a random complex platform, 128-path total-degree "

@@ -2,6 +2,7 @@
 // Template bodies of parallel/stewart.hpp, instantiated once per scalar by soma_instantiate (cmake/SomaInstantiate.cmake).
 #include "soma/geometry/parallel/stewart.hpp"
 #include "soma/geometry/parallel/stewart_class.hpp"
+#include "stewart_fast_tracker.hpp"
 
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/safe_norm.hpp"
@@ -661,7 +662,61 @@ template <class S> std::string sci(const S& v) {
 }
 
 /// The parameter homotopy from the start platform to the (centred, scaled) real platform Pn.
-template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S>& user, bool fine, int expected) {
+/// The fast tracker (stewart_fast_tracker.hpp) on the general tracker's homotopy hom (γ of attempt
+/// 0): true with the 40 endpoints in `ends` when every path reached a finite nonsingular endpoint
+/// and the 40 are distinct (within dupTol); otherwise false and a note saying what was wrong.
+inline bool fastTrack(const ParameterHomotopy<double>& hom, const std::vector<X<double>>& starts,
+                      std::vector<X<double>>& ends, std::string& why, int& steps) {
+  namespace F = stewart_fast;
+  F::Homotopy H;
+  for (int i = 0; i < 6; ++i) {
+    auto& g = H.leg[i];
+    for (int k = 0; k < 3; ++k) {
+      g.d0[k] = F::cx(hom.P0.q[i][k] - hom.P0.p[i][k]);
+      g.s0[k] = F::cx(hom.P0.q[i][k] + hom.P0.p[i][k]);
+      g.dd[k] = F::cx(hom.D.q[i][k] - hom.D.p[i][k]);
+      g.ds[k] = F::cx(hom.D.q[i][k] + hom.D.p[i][k]);
+    }
+    g.l0 = F::cx(hom.P0.L2[i]);
+    g.dl = F::cx(hom.D.L2[i]);
+  }
+  H.gamma = F::cx(hom.gamma);
+  for (int k = 0; k < 8; ++k) H.h[k] = F::cx(hom.h[k]);
+  const F::Settings o;
+  int failed = 0, infinite = 0, coincide = 0;
+  ends.clear();
+  for (const auto& s : starts) {
+    F::V8 x0;
+    for (int k = 0; k < 8; ++k) x0[k] = F::cx(s[k]);
+    const F::Path r = F::track(H, x0, o);
+    steps += r.steps;
+    X<double> x;
+    for (int k = 0; k < 8; ++k) x[k] = {r.x[k].re, r.x[k].im};
+    if (!r.finite) {
+      ++failed;
+      continue;
+    }
+    if (maxNormA<double>(x) <= Tolerance<double>::sqrtEpsilon() * maxNorm<double>(x)) {
+      ++infinite;
+      continue;
+    }
+    bool dup = false;
+    for (const auto& y : ends) dup = dup || samePoint<double>(y, x, Tolerance<double>::input());
+    if (dup) {
+      ++coincide;
+      continue;
+    }
+    ends.push_back(x);
+  }
+  if (failed + infinite + coincide == 0) return true;
+  why = "fast double tracker: " + std::to_string(failed) + " paths failed or ended singular, " +
+        std::to_string(infinite) + " at infinity, " + std::to_string(coincide) +
+        " endpoints coincided with another; re-solved by the general tracker";
+  return false;
+}
+
+template <class S>
+StewartForwardSolution<S> forwardCore(const StewartPlatform<S>& user, bool fine, int expected, bool fast = false) {
   StewartForwardSolution<S> out;
   // Centre and scale: p' = (p − p̄)/σ, q' = (q − q̄)/σ, L' = L/σ.
   Vec3<S> pb = Vec3<S>::Zero(), qb = Vec3<S>::Zero();
@@ -697,6 +752,22 @@ template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S
   int atInfinity = 0, singular = 0, failed = 0;
   std::vector<int> todo(starts.size());
   for (std::size_t k = 0; k < starts.size(); ++k) todo[k] = static_cast<int>(k);
+  if constexpr (std::is_same_v<S, double>) {
+    // The fast tracker first (double, general 6-6; solveStewartForward decides): the general
+    // tracker's loop below runs only when it is in doubt.
+    if (fast && !fine) {
+      hom.gamma = gammaOf<S>(1);
+      std::string why;
+      out.paths_tracked += static_cast<int>(starts.size());
+      if (fastTrack(hom, starts, finite, why, out.steps)) {
+        todo.clear();
+        out.tracker = "fast";
+      } else {
+        finite.clear();
+        out.notes.push_back(why);
+      }
+    }
+  }
   // attempt 0: γ₁, hmax 0.1; 1: same γ, hmax 0.0125 on the failed and colliding paths;
   // 2: another γ, hmax 0.0125, every path not yet accounted for.
   const double hmaxes[3] = {0.25, 0.03, 0.03};
@@ -725,6 +796,7 @@ template <class S> StewartForwardSolution<S> forwardCore(const StewartPlatform<S
     for (int k : todo) {
       ++out.paths_tracked;
       const PathResult<S> r = trackPath<S>(hom, starts[k], o);
+      out.steps += r.steps;
       const bool infinite = maxNormA<S>(r.x) <= Tolerance<S>::sqrtEpsilon() * maxNorm<S>(r.x);
       if (r.end == PathEnd::Finite && !infinite) {
         bool dup = false;
@@ -1005,7 +1077,8 @@ template <class S> S stewartComplexResidual(const StewartPlatform<S>& P, const S
   return worst;
 }
 
-template <class S> StewartForwardSolution<S> solveStewartForward(const StewartPlatform<S>& P, bool fineTracking) {
+template <class S> StewartForwardSolution<S> solveStewartForward(const StewartPlatform<S>& P, StewartTracking tracking) {
+  const bool fineTracking = tracking == StewartTracking::Fine;
   validateStewartPlatform<S>(P);
   // The class decides the expected count (stewart_class.hpp); an architecturally singular platform
   // is refused with the defect named.
@@ -1014,7 +1087,11 @@ template <class S> StewartForwardSolution<S> solveStewartForward(const StewartPl
     throw InvalidInput("stewart: architecturally singular platform: " + cls.singular_reason);
   const int expected = cls.expected_count.value_or(0);
   const auto t0 = std::chrono::steady_clock::now();
-  StewartForwardSolution<S> out = stewart_detail::forwardCore<S>(P, fineTracking, expected);
+  // The fast tracker: double (it exists for speed; the other scalars keep the general tracker) on a
+  // general 6-6 platform (six distinct joints on each side, 40 postures).
+  const bool fast = std::is_same_v<S, double> && tracking == StewartTracking::Auto && expected == 40 &&
+                    cls.base_distinct == 6 && cls.platform_distinct == 6 && !cls.similar && !cls.threefold;
+  StewartForwardSolution<S> out = stewart_detail::forwardCore<S>(P, fineTracking, expected, fast);
   out.expected_count = expected;
   out.platform_class = cls.name;
   out.pattern = cls.pattern;
@@ -1031,7 +1108,7 @@ template <class S> StewartForwardSolution<S> solveStewartForward(const StewartPl
   // (10⁹ times tighter).
   const auto escalate = [&]<class W>(bool fine, int paths) {
     const StewartPlatform<W> Q = P.template cast<W>();
-    const auto hi = solveStewartForward<W>(Q, fine);
+    const auto hi = solveStewartForward<W>(Q, fine ? StewartTracking::Fine : StewartTracking::Auto);
     if (hi.complexCount() <= found) return;
     StewartForwardSolution<S> esc;
     esc.notes = out.notes;
@@ -1061,6 +1138,7 @@ template <class S> StewartForwardSolution<S> solveStewartForward(const StewartPl
     esc.paths_at_infinity = hi.paths_at_infinity;
     esc.paths_singular = hi.paths_singular;
     esc.paths_escalated = out.paths_escalated + paths;
+    esc.tracker = hi.tracker;
     out = esc;
   };
   if (expected > 0 && found < expected && (out.paths_failed > 0 || expected - found <= 8)) {
@@ -1100,7 +1178,7 @@ template <class S> StewartForwardSolution<S> solveStewartForward(const StewartPl
   template StewartComplexPlatform<S> stewartComplexPlatform<S>(const StewartPlatform<S>&);                \
   template StewartComplexPlatform<S> stewartStartPlatform<S>();                                           \
   template const std::vector<StudyPointC<S>>& stewartStartSolutions<S>();                                 \
-  template StewartForwardSolution<S> solveStewartForward<S>(const StewartPlatform<S>&, bool);             \
+  template StewartForwardSolution<S> solveStewartForward<S>(const StewartPlatform<S>&, StewartTracking);             \
   template StewartComplexPosture<S> stewartComplexPosture<S>(const StewartPlatform<S>&, const StudyPointC<S>&);       \
   template S stewartComplexResidual<S>(const StewartPlatform<S>&, const StewartComplexPosture<S>&);               \
   template bool containsConjugate<S>(const std::vector<StudyPointC<S>>&, const StudyPointC<S>&, const S&);

@@ -126,6 +126,65 @@ TEST_CASE("Stewart forward kinematics in double: 40 on random platforms, the def
   CHECK(platforms == 8);
 }
 
+// Issue 21: the fast double tracker (geometry/src/parallel/stewart_fast_tracker.hpp) against the
+// general tracker, two independent trackers (Hermite predictor + simplified Newton vs RK4 + Newton)
+// on the same homotopy; both endpoints polished by Newton at τ = 1 to the rounding floor.
+TEST_CASE("Stewart fast double tracker: 40 distinct, the defining posture, the general tracker's solution set",
+          "[stewart]") {
+  using namespace soma;
+  auto& g = test::rng(2121);
+  for (int trial = 0; trial < 12; ++trial) {
+    SE3<double> pose;
+    const auto P = randomPlatform<double>(g, &pose);
+    const auto s = solveStewartForward<double>(P);
+    const auto ref = solveStewartForward<double>(P, StewartTracking::General);
+    INFO("trial " << trial);
+    CHECK(s.tracker == "fast");
+    CHECK(ref.tracker == "general");
+    CHECK(s.notes.size() == ref.notes.size());  // no fallback note
+    REQUIRE(s.distinctCount() == 40);
+    CHECK(s.complexCount() == 40);
+    CHECK(s.paths_tracked == 40);
+    // Finite, and pairwise apart: the smallest distance between two of the 40 (each scaled so that
+    // its largest coordinate is 1) is far above the matching tolerance below.
+    double sep = 1e300;
+    for (std::size_t i = 0; i < 40; ++i) {
+      for (const auto& z : s.complex_solutions[i]) CHECK((std::isfinite(z.real()) && std::isfinite(z.imag())));
+      for (std::size_t j = i + 1; j < 40; ++j) {
+        double d = 0;
+        for (int k = 0; k < 8; ++k) d = std::max(d, std::abs(s.complex_solutions[i][k] - s.complex_solutions[j][k]));
+        sep = std::min(sep, d);
+      }
+    }
+    CHECK(sep > 1e-4);
+    // The same 40 as the general tracker, one to one: both are Newton-polished at τ = 1 to
+    // ~64 eps · cond, so they agree to far below √eps (checked) and far below the separation.
+    std::vector<bool> used(40, false);
+    double worst = 0;
+    for (const auto& x : s.complex_solutions) {
+      int best = -1;
+      double bd = 1e300;
+      for (std::size_t j = 0; j < ref.complex_solutions.size(); ++j) {
+        double d = 0;
+        for (int k = 0; k < 8; ++k) d = std::max(d, std::abs(x[k] - ref.complex_solutions[j][k]));
+        if (d < bd) bd = d, best = static_cast<int>(j);
+      }
+      REQUIRE(best >= 0);
+      CHECK(!used[static_cast<std::size_t>(best)]);
+      used[static_cast<std::size_t>(best)] = true;
+      worst = std::max(worst, bd);
+    }
+    CHECK(worst <= Tolerance<double>::sqrtEpsilon());
+    CHECK(s.real_count == ref.real_count);
+    REQUIRE(s.count() == ref.count());
+    for (std::size_t k = 0; k < s.count(); ++k)
+      CHECK((s.postures[k].matrix() - ref.postures[k].matrix()).norm() <= Tolerance<double>::sqrtEpsilon());
+    CHECK(nearest<double>(s, pose) <= 1e-10);
+    CHECK(s.worstResidual() <= Tolerance<double>::identity(64));
+    checkConjugatePairs<double>(s);
+  }
+}
+
 TEMPLATE_TEST_CASE("Stewart forward kinematics in every scalar", "[stewart]", float, long double, __float128,
                    mpfr::mpreal) {
   using S = TestType;
@@ -138,6 +197,7 @@ TEMPLATE_TEST_CASE("Stewart forward kinematics in every scalar", "[stewart]", fl
   const auto P = randomPlatform<S>(g, &pose);
   const auto s = solveStewartForward<S>(P);
   CHECK(s.complexCount() == 40);
+  CHECK(s.tracker == "general");  // the fast tracker is double only
   const S near = nearest<S>(s, pose);
   CHECK(near >= S(0));
   CHECK(near <= Tolerance<S>::sqrtEpsilon());
@@ -229,6 +289,7 @@ TEST_CASE("Stewart 6-3 platform: 16 postures, the other 24 paths end at singular
     const auto s = solveStewartForward<double>(P);
     CHECK(s.expected_count == 16);
     CHECK(s.complexCount() == 16);
+    CHECK(s.tracker == "general");  // not a general 6-6 platform: the fast tracker is not tried
     CHECK(s.paths_failed == 0);
     CHECK(s.paths_singular == 24);
     CHECK(nearest<double>(s, pose) <= 1e-10);

@@ -102,6 +102,8 @@ template <class S> struct StewartForwardSolution {
   int expected_count = 40;
   /// Paths tracked in total (40 on the plain path; more when some were re-tracked).
   int paths_tracked = 0;
+  /// Predictor–corrector steps over all paths tracked (accepted and rejected).
+  int steps = 0;
   /// Paths that did not reach a finite nonsingular endpoint on the last attempt.
   int paths_failed = 0;
   /// Paths tracked again in a wider scalar (0 when none; a note says which and why): float's failed
@@ -117,6 +119,9 @@ template <class S> struct StewartForwardSolution {
   int paths_singular = 0;
   double seconds = 0;
   std::string method = "homotopy";
+  /// Which tracker gave the answer: "fast" (double, general 6-6 platform: stewart_fast_tracker.hpp)
+  /// or "general" (every other case, and double when the fast tracker was in doubt; a note says so).
+  std::string tracker = "general";
   std::vector<std::string> notes;
 
   std::size_t count() const { return postures.size(); }
@@ -170,12 +175,21 @@ std::vector<StudyPointC<double>> stewartTotalDegreeSolve(const StewartComplexPla
 /// degree homotopy) and Newton-polished in S; cached.
 template <class S> const std::vector<StudyPointC<S>>& stewartStartSolutions();
 
-/// All postures of a platform by the parameter homotopy from the start platform. fineTracking:
-/// track to √eps of S (never below float128's) instead of √eps of double — the escalation used
-/// when a few paths end singular (two solutions very close together); slow in float128/mpfr.
+/// The path tracker of solveStewartForward.
+///   Auto     in double on a general 6-6 platform (six distinct joints on each side, 40 postures):
+///            the fast tracker (one LU per Newton step, Hermite predictor, hand-written complex
+///            arithmetic), which falls back to the general tracker, with a note, when a path fails,
+///            ends singular or at infinity, or two endpoints coincide; otherwise General.
+///   General  the general tracker only (RK4 predictor; the cross-check of the fast one).
+///   Fine     the general tracker to √eps of S (never below float128's) instead of √eps of double:
+///            the escalation used when a few paths end singular (two solutions very close
+///            together); slow in float128/mpfr.
+enum class StewartTracking { Auto, General, Fine };
+
+/// All postures of a platform by the parameter homotopy from the start platform.
 /// GF §11.5.4, GF-11.5.4-stewart-forty
 template <class S>
-StewartForwardSolution<S> solveStewartForward(const StewartPlatform<S>& P, bool fineTracking = false);
+StewartForwardSolution<S> solveStewartForward(const StewartPlatform<S>& P, StewartTracking tracking = StewartTracking::Auto);
 
 /// A complex solution x of solveStewartForward (in its centred and scaled coordinates) as a
 /// posture of the user's platform P: rotation, translation and Study parameters (complex).
@@ -199,7 +213,7 @@ template <class S> bool containsConjugate(const std::vector<StudyPointC<S>>& set
   extern template StewartComplexPlatform<S> stewartComplexPlatform<S>(const StewartPlatform<S>&);         \
   extern template StewartComplexPlatform<S> stewartStartPlatform<S>();                                    \
   extern template const std::vector<StudyPointC<S>>& stewartStartSolutions<S>();                          \
-  extern template StewartForwardSolution<S> solveStewartForward<S>(const StewartPlatform<S>&, bool);      \
+  extern template StewartForwardSolution<S> solveStewartForward<S>(const StewartPlatform<S>&, StewartTracking);      \
   extern template StewartComplexPosture<S> stewartComplexPosture<S>(const StewartPlatform<S>&, const StudyPointC<S>&); \
   extern template S stewartComplexResidual<S>(const StewartPlatform<S>&, const StewartComplexPosture<S>&);         \
   extern template bool containsConjugate<S>(const std::vector<StudyPointC<S>>&, const StudyPointC<S>&,    \
