@@ -75,6 +75,7 @@ std::string stewartOutputJson(const SceneOutput& o, const StewartPlatform<S>& P,
   j["platform"] = o.platform;
   const bool homotopy = sol.method == "homotopy";
   if (homotopy) {
+    j["tracker"] = sol.tracker;
     j["class"] = sol.platform_class;
     j["pattern"] = sol.pattern;
   }

@@ -190,7 +190,8 @@ class StewartResult:
     ``poses()`` gives them as SE3 (double). ``complex_count`` is the number of complex solutions
     the homotopy found, counted with multiplicity (-1 for the numerical methods), and
     ``expected_count`` the count of the platform's class (``platform_class``, e.g. "6-6", "6-3";
-    ``pattern`` its leg–joint incidence); ``multiplicities`` gives each real posture's (2 for a
+    ``pattern`` its leg–joint incidence; ``tracker`` "fast" or "general", the homotopy's path
+    tracker); ``multiplicities`` gives each real posture's (2 for a
     double root on the boundary of the assembly space). With ``solve(complex=True)``,
     ``complex_solutions`` lists every complex solution as a dict: ``translation`` (3 complex),
     ``rotation`` (the quaternion, 4 complex, a·a = 1), ``real`` and ``multiplicity`` (complex for
@@ -211,6 +212,7 @@ class StewartResult:
     multiplicities: list = field(default_factory=list)
     platform_class: str = ""
     pattern: str = ""
+    tracker: str = ""
     complex_solutions: list = field(default_factory=list)
 
     @property

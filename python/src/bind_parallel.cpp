@@ -61,6 +61,7 @@ py::dict solveIn(const PlatformHandle& h, StewartMethod method, int starts, std:
   d["seconds"] = sol.seconds;
   d["start_seconds"] = sol.start_seconds;
   d["method"] = sol.method;
+  d["tracker"] = sol.tracker;
   d["scalar"] = std::string(scalarName<S>());
   d["expected_count"] = sol.expected_count;
   d["complex_count"] = method == StewartMethod::Homotopy ? int(sol.complexCount()) : -1;

@@ -61,6 +61,8 @@ def test_complex_solutions_satisfy_the_leg_equations(platforms, name, cls, expec
     P = soma.Platform.from_file(platforms / f"{name}.json")
     r = P.solve(complex=True)
     assert r.platform_class == cls and r.expected_count == expected and r.certified
+    # the fast double tracker for a general 6-6 platform, the general one for the others
+    assert r.tracker == ("fast" if cls == "6-6" else "general")
     assert r.complex_count == expected == len(r.complex_solutions) == r.distinct_complex_count
     assert sum(s["real"] for s in r.complex_solutions) == r.count == real
     assert r.multiplicities == [1] * real
