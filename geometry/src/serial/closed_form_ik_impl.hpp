@@ -61,7 +61,8 @@ template <class S> Angle<S> angleOf(const S& y, const S& x) {
   // |(x, y)|² in range: one square root; else (underflow or overflow of the squares) hypot.
   const S r = r2 > std::numeric_limits<S>::min() && r2 < std::numeric_limits<S>::max() ? sqrt(r2) : hypot(x, y);
   if (!(r > S(0))) return {};
-  return {atan2(y, x), x / r, y / r};
+  const S ir = S(1) / r;
+  return {atan2(y, x), x * ir, y * ir};
 }
 /// An angle given by its value: (θ, cos θ, sin θ).
 template <class S> Angle<S> angleFrom(const S& th) {
@@ -184,22 +185,33 @@ template <class S> struct TrigPair {
 template <class S> TrigPair<S> linearTrig(const S& p, const S& q, const S& k) {
   using std::abs;
   using std::sqrt;
+  using std::atan2;
   TrigPair<S> out;
   const S rho2 = p * p + q * q;
-  const S scale = std::max<S>(sqrt(rho2), abs(k));
-  if (rho2 <= Tolerance<S>::rank() * Tolerance<S>::rank() * scale * scale || scale == S(0)) {
+  const S scale2 = std::max<S>(rho2, k * k);  // scale² with scale = max(ρ, |k|)
+  if (rho2 <= Tolerance<S>::rank() * Tolerance<S>::rank() * scale2 || scale2 == S(0)) {
+    const S scale = sqrt(scale2);
     out.free = abs(k) <= Tolerance<S>::rank() * (scale > S(0) ? scale : S(1)) || scale == S(0);
     return out;  // p = q = 0: no solution unless k = 0 too
   }
   S disc = rho2 - k * k;
+  bool clamped = false;
   if (disc < S(0)) {
     if (-disc > Tolerance<S>::rank() * rho2) return out;  // unreachable
     disc = S(0);
+    clamped = true;
   }
   if (disc <= Tolerance<S>::rank() * rho2) out.doubleRoot = true;
   const S sd = sqrt(disc);
-  out.a[0] = angleOf<S>(q * k - p * sd, p * k + q * sd);
-  out.a[1] = angleOf<S>(q * k + p * sd, p * k - q * sd);
+  const S x0 = p * k + q * sd, y0 = q * k - p * sd, x1 = p * k - q * sd, y1 = q * k + p * sd;
+  if (clamped) {  // k² slightly above ρ²: normalise each pair by its length
+    out.a[0] = angleOf<S>(y0, x0);
+    out.a[1] = angleOf<S>(y1, x1);
+  } else {  // |(x, y)|² = ρ² (k² + disc) = ρ⁴: the pair over ρ² is (cos φ, sin φ)
+    const S inv = S(1) / rho2;
+    out.a[0] = {atan2(y0, x0), x0 * inv, y0 * inv};
+    out.a[1] = {atan2(y1, x1), x1 * inv, y1 * inv};
+  }
   out.n = 2;
   return out;
 }
@@ -432,103 +444,199 @@ enum class ResidualMode { Pose, Position, Rotation };
 template <class S> using Joints6 = Eigen::Matrix<S, 6, 1>;
 
 /// The raw postures of one solve (joint values before the offsets), with the candidate flags.
+/// With `trig` set, c and s hold the cosine and sine each angle was computed from (q = atan2(s, c)),
+/// which the residual's forward kinematics uses instead of calling sin and cos again.
 template <class S> struct Raws {
   static constexpr int kMax = 16;
-  std::array<Joints6<S>, kMax> q;
-  std::array<char, kMax> cand{};
+  std::array<Joints6<S>, kMax> q, c, s;
+  std::array<char, kMax> cand{}, trig{};
   int n = 0;
   Joints6<S>& push(bool candidate) {
     if (n == kMax) throw std::logic_error("closed form: more raw postures than the class has");
     cand[n] = candidate ? 1 : 0;
+    trig[n] = 0;
     q[n].setZero();
     return q[n++];
   }
+  /// A posture given by its angles with their cosines and sines (joints 0..size−1).
+  template <std::size_t N> void push(bool candidate, const std::array<Angle<S>, N>& a) {
+    push(candidate);
+    const int k = n - 1;
+    trig[k] = 1;
+    for (std::size_t i = 0; i < N; ++i) {
+      q[k](int(i)) = a[i].th;
+      c[k](int(i)) = a[i].c;
+      s[k](int(i)) = a[i].s;
+    }
+  }
+  /// Joints reversed (a posture of the reversed robot: same values, same cosines and sines).
+  void reverse(int k) {
+    q[k].reverseInPlace();
+    c[k].reverseInPlace();
+    s[k].reverseInPlace();
+  }
 };
 
-/// The target and home pose as matrices, computed once per solve.
+/// The target and home pose as matrices, computed once per solve; RTM = R* R_Mᵀ, the rotation the
+/// joints' product must reach (‖R(q) R_M − R*‖_F = ‖R(q) − R* R_Mᵀ‖_F, R_M orthogonal).
 template <class S> struct PoseMatrices {
-  Mat3<S> RT, RM;
+  Mat3<S> RT, RM, RTM;
   Vec3<S> tT, tM;
+  S invL, invL2;  ///< 1 / L and 1 / L² of the robot's length scale
   PoseMatrices(const SerialRobot<S>& robot, const SE3<S>& target)
       : RT(target.rotation()), RM(robot.home().rotation()), tT(target.translation()),
-        tM(robot.home().translation()) {}
+        tM(robot.home().translation()), invL(S(1) / robot.lengthScale()), invL2(invL * invL) {
+    RTM.noalias() = RT * RM.transpose();
+  }
 };
 
-/// Forward kinematics with rotation matrices (no quaternions), for the residuals:
-/// e^{(q1 + o1) ξ1} ··· e^{(qn + on) ξn} · M (SerialRobot::fk's product of exponentials, GF §4.5).
-/// The partial products after each joint are kept: the next posture that shares its leading joint
-/// values (bit for bit: the wrist postures of one arm solution) starts from them.
+/// Forward kinematics of the joints' product e^{(q1 + o1) ξ1} ··· e^{(qn + on) ξn} (SerialRobot::fk's
+/// product of exponentials, GF §4.5) in rotation matrices, for the residuals. Each revolute factor is
+/// Rodrigues' R_i = c I + s [v]× + (1 − c) v vᵀ with the translation p − R_i p = (1 − c) p⊥ − s v × p
+/// (p⊥ = p − v (v·p)), from one sincos. The product is kept in two parts, the joints before `split`
+/// (from the base) and from `split` on (from the tool), each with its partial products: the next
+/// posture that shares leading or trailing joint values (bit for bit: the postures of one arm solution,
+/// which differ only in the three joints of the Pieper triple) starts from them. Plain scalar arrays
+/// (3×3 products in Eigen's packets cost twice as much here).
 template <class S> class FkChain {
  public:
-  FkChain(const SerialRobot<S>& robot, const PoseMatrices<S>& pm) : robot_(robot), pm_(pm) {
-    R_[0].setIdentity();
-    t_[0].setZero();
-  }
-  template <class Vec> void eval(const Vec& q, Mat3<S>& R, Vec3<S>& t) {
-    const auto& J = robot_.joints();
-    const int n = robot_.dof();
-    int m = 0;
-    while (m < valid_ && q(m) == q_[m]) ++m;
-    for (int i = m; i < n; ++i) {
-      q_[i] = q(i);
+  FkChain(const SerialRobot<S>& robot, int split) : n_(robot.dof()), split_(std::clamp(split, 0, robot.dof())) {
+    const auto& J = robot.joints();
+    for (int i = 0; i < n_ && i < 6; ++i) {
       const Vec3<S>& v = J[i].axis;
-      const S th = q(i) + J[i].offset;
-      if (J[i].type == JointType::Prismatic) {
-        R_[i + 1] = R_[i];
-        t_[i + 1] = t_[i] + R_[i] * (v * th);
-        continue;
-      }
-      S s, c;
-      sinCos(th, s, c);
-      const S c1 = S(1) - c;
-      Mat3<S> Ri;  // Rodrigues: c I + s [v]× + (1 − c) v vᵀ
-      Ri << c + c1 * v.x() * v.x(), c1 * v.x() * v.y() - s * v.z(), c1 * v.x() * v.z() + s * v.y(),  //
-          c1 * v.y() * v.x() + s * v.z(), c + c1 * v.y() * v.y(), c1 * v.y() * v.z() - s * v.x(),    //
-          c1 * v.z() * v.x() - s * v.y(), c1 * v.z() * v.y() + s * v.x(), c + c1 * v.z() * v.z();
       const Vec3<S>& p = J[i].point;
-      t_[i + 1] = t_[i] + R_[i] * Vec3<S>(p - Ri * p);
-      R_[i + 1].noalias() = R_[i] * Ri;
+      Joint& j = j_[i];
+      for (int k = 0; k < 3; ++k) j.v[k] = v(k);
+      j.vv[0] = v.x() * v.x(), j.vv[1] = v.y() * v.y(), j.vv[2] = v.z() * v.z();
+      j.vv[3] = v.x() * v.y(), j.vv[4] = v.x() * v.z(), j.vv[5] = v.y() * v.z();
+      const Vec3<S> pp = p - v * v.dot(p), w = v.cross(p);
+      for (int k = 0; k < 3; ++k) j.pp[k] = pp(k), j.w[k] = w(k);
+      j.offset = J[i].offset;
+      j.prismatic = J[i].type == JointType::Prismatic;
     }
-    valid_ = n;
-    t = t_[n] + R_[n] * pm_.tM;
-    R.noalias() = R_[n] * pm_.RM;
+    for (int k = 0; k < 9; ++k) PR_[0][k] = SR_[n_][k] = k % 4 == 0 ? S(1) : S(0);
+    for (int k = 0; k < 3; ++k) Pt_[0][k] = St_[n_][k] = S(0);
+    validS_ = n_;
+  }
+  /// The product's rotation R (row-major) and translation t for the joint values q.
+  /// `c`, `s` (optional): cos and sin of each q_i + o_i, else computed here.
+  template <class Vec> void eval(const Vec& q, S (&R)[9], S (&t)[3], const S* c = nullptr, const S* s = nullptr) {
+    int m = 0;  // leading joints shared with the cached prefix
+    while (m < validP_ && q(m) == qp_[m]) ++m;
+    for (int i = m; i < split_; ++i) {
+      qp_[i] = q(i);
+      S Ri[9], d[3];
+      factor(i, q(i), Ri, d, c, s);
+      const S *A = PR_[i], *ta = Pt_[i];
+      S *B = PR_[i + 1], *tb = Pt_[i + 1];
+      for (int r = 0; r < 3; ++r) {  // (A, ta)·(Ri, d) = (A Ri, A d + ta)
+        const S a0 = A[3 * r], a1 = A[3 * r + 1], a2 = A[3 * r + 2];
+        tb[r] = ta[r] + a0 * d[0] + a1 * d[1] + a2 * d[2];
+        B[3 * r] = a0 * Ri[0] + a1 * Ri[3] + a2 * Ri[6];
+        B[3 * r + 1] = a0 * Ri[1] + a1 * Ri[4] + a2 * Ri[7];
+        B[3 * r + 2] = a0 * Ri[2] + a1 * Ri[5] + a2 * Ri[8];
+      }
+    }
+    validP_ = split_;
+    int k = n_;  // trailing joints k..n−1 shared with the cached suffix
+    while (k > split_ && k - 1 >= validS_ && q(k - 1) == qs_[k - 1]) --k;
+    for (int i = k - 1; i >= split_; --i) {
+      qs_[i] = q(i);
+      S Ri[9], d[3];
+      factor(i, q(i), Ri, d, c, s);
+      const S *A = SR_[i + 1], *ta = St_[i + 1];
+      S *B = SR_[i], *tb = St_[i];
+      for (int r = 0; r < 3; ++r) {  // (Ri, d)·(A, ta) = (Ri A, Ri ta + d)
+        tb[r] = d[r] + Ri[3 * r] * ta[0] + Ri[3 * r + 1] * ta[1] + Ri[3 * r + 2] * ta[2];
+        for (int c = 0; c < 3; ++c)
+          B[3 * r + c] = Ri[3 * r] * A[c] + Ri[3 * r + 1] * A[3 + c] + Ri[3 * r + 2] * A[6 + c];
+      }
+    }
+    validS_ = split_;
+    const S *PR = PR_[split_], *Pt = Pt_[split_], *SR = SR_[split_], *St = St_[split_];
+    if (split_ == n_) {
+      for (int i = 0; i < 9; ++i) R[i] = PR[i];
+      for (int i = 0; i < 3; ++i) t[i] = Pt[i];
+      return;
+    }
+    for (int r = 0; r < 3; ++r) {
+      t[r] = Pt[r] + PR[3 * r] * St[0] + PR[3 * r + 1] * St[1] + PR[3 * r + 2] * St[2];
+      for (int c = 0; c < 3; ++c) R[3 * r + c] = PR[3 * r] * SR[c] + PR[3 * r + 1] * SR[3 + c] + PR[3 * r + 2] * SR[6 + c];
+    }
   }
 
  private:
-  const SerialRobot<S>& robot_;
-  const PoseMatrices<S>& pm_;
-  std::array<Mat3<S>, 7> R_;
-  std::array<Vec3<S>, 7> t_;
-  std::array<S, 6> q_;
-  int valid_ = 0;
+  struct Joint {
+    S v[3], vv[6], pp[3], w[3], offset;
+    bool prismatic;
+  };
+  /// The factor of joint i at joint value q: x ↦ Ri x + d.
+  SOMA_ALWAYS_INLINE void factor(int i, const S& q, S (&Ri)[9], S (&d)[3], const S* cq, const S* sq) const {
+    const Joint& j = j_[i];
+    const S th = q + j.offset;
+    if (j.prismatic) {
+      for (int k = 0; k < 9; ++k) Ri[k] = k % 4 == 0 ? S(1) : S(0);
+      for (int k = 0; k < 3; ++k) d[k] = th * j.v[k];
+      return;
+    }
+    S s, c;
+    if (cq) {
+      c = cq[i];
+      s = sq[i];
+    } else {
+      sinCos(th, s, c);
+    }
+    const S c1 = S(1) - c;
+    Ri[0] = c + c1 * j.vv[0], Ri[1] = c1 * j.vv[3] - s * j.v[2], Ri[2] = c1 * j.vv[4] + s * j.v[1];
+    Ri[3] = c1 * j.vv[3] + s * j.v[2], Ri[4] = c + c1 * j.vv[1], Ri[5] = c1 * j.vv[5] - s * j.v[0];
+    Ri[6] = c1 * j.vv[4] - s * j.v[1], Ri[7] = c1 * j.vv[5] + s * j.v[0], Ri[8] = c + c1 * j.vv[2];
+    for (int k = 0; k < 3; ++k) d[k] = c1 * j.pp[k] - s * j.w[k];
+  }
+  int n_, split_;
+  Joint j_[6];
+  S PR_[7][9], Pt_[7][3], SR_[7][9], St_[7][3], qp_[6], qs_[6];
+  int validP_ = 0, validS_ = 0;
 };
 
 template <class S, class Vec>
-S residualOf(const SerialRobot<S>& robot, const Vec& q, const PoseMatrices<S>& pm, FkChain<S>& fk,
-             ResidualMode mode) {
+S residualOf(const Vec& q, const PoseMatrices<S>& pm, FkChain<S>& fk,
+             ResidualMode mode, const S* c = nullptr, const S* s = nullptr) {
   using std::sqrt;
-  Mat3<S> R;
-  Vec3<S> t;
-  fk.eval(q, R, t);
-  const S L = robot.lengthScale();
+  S R[9], t[3];
+  fk.eval(q, R, t, c, s);
+  S r2 = S(0), t2 = S(0);
+  if (mode != ResidualMode::Position)
+    for (int r = 0; r < 3; ++r)
+      for (int k = 0; k < 3; ++k) {
+        const S e = R[3 * r + k] - pm.RTM(r, k);
+        r2 += e * e;
+      }
+  if (mode != ResidualMode::Rotation)
+    for (int r = 0; r < 3; ++r) {  // t + R t_M − t*
+      const S e = t[r] + R[3 * r] * pm.tM(0) + R[3 * r + 1] * pm.tM(1) + R[3 * r + 2] * pm.tM(2) - pm.tT(r);
+      t2 += e * e;
+    }
+  // poseResidual (serial_robot.hpp): sqrt(max(|R − R*|², |t − t*|² / L²))
   switch (mode) {
-    case ResidualMode::Position: return sqrt((t - pm.tT).squaredNorm()) / L;
-    case ResidualMode::Rotation: return sqrt((R - pm.RT).squaredNorm());
+    case ResidualMode::Position: return sqrt(t2) * pm.invL;
+    case ResidualMode::Rotation: return sqrt(r2);
     case ResidualMode::Pose: break;
   }
-  // poseResidual (serial_robot.hpp): sqrt(max(|R − R*|², |t − t*|² / L²))
-  return sqrt(std::max<S>((R - pm.RT).squaredNorm(), (t - pm.tT).squaredNorm() / (L * L)));
+  return sqrt(std::max<S>(r2, t2 * pm.invL2));
 }
 
+/// An angle wrapped to (−π, π] (kept as it is when it lies there).
+template <class S> S wrapAngle(const S& x) {
+  using std::atan2;
+  if (x > -pi<S>() && x <= pi<S>()) return x;
+  S s, c;
+  sinCos(x, s, c);
+  return atan2(s, c);
+}
 /// Revolute joints wrapped to (−π, π] (SerialRobot::wrap without its copy; in-range values kept).
 template <class S, class Vec> void wrapInPlace(const SerialRobot<S>& robot, Vec& q) {
-  using std::atan2;
   for (int i = 0; i < robot.dof() && i < int(q.size()); ++i)
-    if (robot.joints()[i].type == JointType::Revolute && !(q(i) > -pi<S>() && q(i) <= pi<S>())) {
-      S s, c;
-      sinCos(S(q(i)), s, c);
-      q(i) = atan2(s, c);
-    }
+    if (robot.joints()[i].type == JointType::Revolute) q(i) = wrapAngle<S>(q(i));
 }
 
 /// Newton steps on the posture (full pose: body Jacobian and the SE(3) log; position: the tool
@@ -563,7 +671,7 @@ void polish(const SerialRobot<S>& robot, JointVector<S>& q, const SE3<S>& target
     }
     if (!allFinite(dq)) return;
     const JointVector<S> qn = q + dq;
-    const S rn = residualOf(robot, qn, pm, fk, mode);
+    const S rn = residualOf(qn, pm, fk, mode);
     if (!(rn < res)) return;
     q = qn;
     res = rn;
@@ -571,23 +679,39 @@ void polish(const SerialRobot<S>& robot, JointVector<S>& q, const SE3<S>& target
 }
 
 template <class S>
-void finish(const SerialRobot<S>& robot, const SE3<S>& target, ResidualMode mode, const Raws<S>& raws,
-            Solution<S>& sol, Clock::time_point t0) {
+void finish(const SerialRobot<S>& robot, const SE3<S>& target, const PoseMatrices<S>& pm, ResidualMode mode,
+            const Raws<S>& raws, Solution<S>& sol, Clock::time_point t0, int split) {
   int outside = 0, missed = 0;
   const int n = robot.dof();
-  const PoseMatrices<S> pm(robot, target);
-  FkChain<S> fk(robot, pm);
+  FkChain<S> fk(robot, split);
   sol.postures.reserve(std::size_t(raws.n));
   sol.residuals.reserve(std::size_t(raws.n));
+  std::array<S, 6> offset{};
+  std::array<bool, 6> revolute{};
+  bool limited = false;  // some joint has a finite limit
+  for (int i = 0; i < n && i < 6; ++i) {
+    const auto& j = robot.joints()[i];
+    offset[i] = j.offset;
+    revolute[i] = j.type == JointType::Revolute;
+    limited = limited || j.lower > -std::numeric_limits<S>::infinity() || j.upper < std::numeric_limits<S>::infinity();
+  }
   for (int k = 0; k < raws.n; ++k) {
     Joints6<S> q = raws.q[k];
-    for (int i = 0; i < n; ++i) q(i) -= robot.joints()[i].offset;
-    wrapInPlace(robot, q);
-    S res = residualOf(robot, q, pm, fk, mode);
+    for (int i = 0; i < n; ++i) {  // offsets off, revolute joints wrapped to (−π, π] (wrapInPlace)
+      q(i) -= offset[i];
+      if (revolute[i]) q(i) = wrapAngle<S>(q(i));
+    }
+    // The residual's forward kinematics at q, with cos and sin of q_i + o_i taken from the pair each
+    // angle was computed from when the solver kept it (q_i + o_i = atan2(s_i, c_i) up to the rounding
+    // of the offset and the wrap by 2π: the pair is cos and sin of it to about 1 ulp, as sin and cos
+    // themselves are).
+    S res = raws.trig[k] ? residualOf(q, pm, fk, mode, raws.c[k].data(), raws.s[k].data())
+                         : residualOf(q, pm, fk, mode);
     if (res > Tolerance<S>::identity()) {
       JointVector<S> qd = q.head(n);
       polish(robot, qd, target, pm, fk, mode, res);
       q.head(n) = qd;
+      wrapInPlace(robot, q);
     }
     // A candidate (the real part of a complex pair near the real axis, see solveCirclePair) that
     // Newton cannot bring onto the pose is not a posture.
@@ -595,13 +719,13 @@ void finish(const SerialRobot<S>& robot, const SE3<S>& target, ResidualMode mode
       ++missed;
       continue;
     }
-    wrapInPlace(robot, q);
     // θ + 2πk where the limits lie off (−π, π]
-    if (!shiftIntoLimitsInPlace(robot, q)) {
+    if (limited && !shiftIntoLimitsInPlace(robot, q)) {
       ++outside;
       continue;
     }
-    sol.postures.emplace_back(q.head(n));
+    JointVector<S>& out = sol.postures.emplace_back(n);
+    for (int i = 0; i < n; ++i) out(i) = q(i);
     sol.residuals.push_back(res);
   }
   if (outside)
@@ -632,9 +756,10 @@ template <class S> bool concurrentPoint(const std::array<Vec3<S>, 3>& v, const s
     A += P;
     b += P * r[i];
   }
-  const Eigen::PartialPivLU<Mat3<S>> lu(A);
-  if (!(abs(lu.determinant()) > Tolerance<S>::input())) return false;  // parallel axes
-  c = lu.solve(b);
+  // A = Σ (I − v vᵀ) is 3×3 symmetric: its determinant and inverse by cofactors (Eigen's fixed-size path).
+  const S det = A.determinant();
+  if (!(abs(det) > Tolerance<S>::input())) return false;  // parallel axes
+  c = A.inverse() * b;
   for (int i = 0; i < 3; ++i) {
     const Vec3<S> d = (c - r[i]) - v[i] * v[i].dot(c - r[i]);
     if (d.squaredNorm() > tol * tol) return false;
@@ -678,7 +803,7 @@ template <class S> Vec3<S> normalTo(const Vec3<S>& v) {
 /// Up to 2 solutions (raw angles) in `out`. GF §10.3.2 (the planar arm after the T³ reduction:
 /// cosine rule for θ3, erratum E10.7; θ2 from X, Y, erratum E10.8)
 template <class S> int planar3R(const SerialRobot<S>& robot, int j, const RigidMatrix<S>& X,
-                                std::array<Vec3<S>, 2>& out, bool& doubleRoot, bool& degenerate) {
+                                std::array<std::array<Angle<S>, 3>, 2>& out, bool& doubleRoot, bool& degenerate) {
   const auto& J = robot.joints();
   const Vec3<S> u = J[j].axis;
   auto P = [&](const Vec3<S>& x) { return Vec3<S>(x - u * u.dot(x)); };
@@ -695,7 +820,7 @@ template <class S> int planar3R(const SerialRobot<S>& robot, int j, const RigidM
     t2.a[0] = Angle<S>{};
   }
   const S L2 = robot.lengthScale() * robot.lengthScale();
-  const Vec3<S> v3 = J[j + 2].axis, x = normalTo(v3), RXx = X.R * x;
+  const Vec3<S> v3 = J[j + 2].axis, x = normalTo(v3), RXx = X.R * x, g3 = v3.cross(x);
   for (int i = 0; i < t2.n; ++i) {
     const Angle<S>& a2 = t2.a[i];
     const Vec3<S> a = r2 + rotateAbout<S>(v2, a2.c, a2.s, Vec3<S>(r3 - r2));  // E_{j+1}(θ2) r3
@@ -704,7 +829,7 @@ template <class S> int planar3R(const SerialRobot<S>& robot, int j, const RigidM
     if (deg) degenerate = true;
     // R3 x = R2ᵀ R1ᵀ RX x
     const Vec3<S> R3x = rotateAbout<S>(v2, a2.c, S(-a2.s), rotateAbout<S>(J[j].axis, a1.c, S(-a1.s), RXx));
-    out[i] = Vec3<S>(a1.th, a2.th, angleAbout<S>(v3, x, R3x, nullptr, S(1)).th);
+    out[i] = {a1, a2, angleOf<S>(R3x.dot(g3), R3x.dot(x))};  // v3·(x × R3x) = R3x·(v3 × x)
   }
   return t2.n;
 }
@@ -712,7 +837,7 @@ template <class S> int planar3R(const SerialRobot<S>& robot, int j, const RigidM
 /// wrist3R without allocation: up to 2 (θ1, θ2, θ3) in `out`, their count returned.
 // GF §5.1, GF-5.1-wrist-theta2, GF-5.1-wrist-theta1-theta3 (corrected sign, erratum E5.1)
 template <class S> int wristCore(const Vec3<S>& v1, const Vec3<S>& v2, const Vec3<S>& v3, const Mat3<S>& R,
-                                 std::array<Vec3<S>, 2>& out, bool& gimbal, bool& doubleRoot) {
+                                 std::array<std::array<Angle<S>, 3>, 2>& out, bool& gimbal, bool& doubleRoot) {
   // v1ᵀ e^{θ2 v2} v3 = (v1·v2)(v2·v3) + cos θ2 [v1·v3 − (v1·v2)(v2·v3)] + sin θ2 v1·(v2×v3).
   const S c12 = v1.dot(v2) * v2.dot(v3);
   const Vec3<S> z = R * v3;
@@ -723,18 +848,22 @@ template <class S> int wristCore(const Vec3<S>& v1, const Vec3<S>& v2, const Vec
     t2.n = 1;
     t2.a[0] = Angle<S>{};
   }
-  const Vec3<S> x = normalTo(v3), Rx = R * x;
+  // θ1 is the angle about v1 from y to z (projections y′, z′ ⟂ v1): v1·(y′ × z′) = y·(z′ × v1) and
+  // y′·z′ = y·z′, so z′ and z′ × v1 are formed once. θ3 is the angle about v3 from x (⟂ v3) to R3 x:
+  // v3·(x × R3x) = R3x·(v3 × x).
+  const Vec3<S> zp = z - v1 * v1.dot(z), g1 = zp.cross(v1);
+  const Vec3<S> x = normalTo(v3), Rx = R * x, g3 = v3.cross(x);
   for (int i = 0; i < t2.n; ++i) {
     const Angle<S>& a2 = t2.a[i];
     const Vec3<S> y = rotateAbout<S>(v2, a2.c, a2.s, v3);  // the book's y = e^{θ2 ad v2} v3
     const Vec3<S> yp = y - v1 * v1.dot(y);
     const bool g = yp.squaredNorm() <= Tolerance<S>::identity(64);
     // y'·z' = |y'|² cos θ1 and v1·(y'×z') = |y'|² sin θ1, i.e. −(y×v1)ᵀ R v3 (E5.1).
-    const Angle<S> a1 = g ? Angle<S>{} : angleAbout<S>(v1, y, z, nullptr, S(1));
+    const Angle<S> a1 = g ? Angle<S>{} : angleOf<S>(y.dot(g1), y.dot(zp));
     if (g) gimbal = true;
     // R3 x = e^{−θ2 v2} e^{−θ1 v1} R x
     const Vec3<S> R3x = rotateAbout<S>(v2, a2.c, S(-a2.s), rotateAbout<S>(v1, a1.c, S(-a1.s), Rx));
-    out[i] = Vec3<S>(a1.th, a2.th, angleAbout<S>(v3, x, R3x, nullptr, S(1)).th);
+    out[i] = {a1, a2, angleOf<S>(R3x.dot(g3), R3x.dot(x))};
   }
   return t2.n;
 }
@@ -753,9 +882,9 @@ template <class S> TrigRoots<S> solveLinearTrig(const S& p, const S& q, const S&
 template <class S>
 WristAngles<S> wrist3R(const Vec3<S>& v1, const Vec3<S>& v2, const Vec3<S>& v3, const Mat3<S>& R) {
   WristAngles<S> out;
-  std::array<Vec3<S>, 2> a;
+  std::array<std::array<Angle<S>, 3>, 2> a;
   const int n = wristCore<S>(v1, v2, v3, R, a, out.gimbal, out.doubleRoot);
-  out.angles.assign(a.begin(), a.begin() + n);
+  for (int i = 0; i < n; ++i) out.angles.emplace_back(a[i][0].th, a[i][1].th, a[i][2].th);
   return out;
 }
 
@@ -778,6 +907,17 @@ template <class S> PieperTriple<S> findPieperTriple(const SerialRobot<S>& robot)
       out.direction = v[0];
       return out;
     }
+    // Concurrent axes are pairwise within 2 tol·L of each other (each is within tol·L of the common
+    // point): two skew axes farther apart rule the triple out before the least-squares point.
+    bool skew = false;
+    for (int a = 0; a < 3 && !skew; ++a) {
+      const int b = (a + 1) % 3;
+      const Vec3<S> n = v[a].cross(v[b]);
+      const S nn = n.norm();
+      using std::abs;
+      skew = nn > tol && abs(S((r[b] - r[a]).dot(n))) > S(2) * tol * robot.lengthScale() * nn;
+    }
+    if (skew) continue;
     Vec3<S> c;
     if (concurrentPoint<S>(v, r, tol * robot.lengthScale(), c)) {
       out.first = first;
@@ -820,7 +960,7 @@ template <class S> Solution<S> solveWrist3R(const SerialRobot<S>& robot, const S
   sol.expected_count = 2;
   const auto& J = robot.joints();
   const Mat3<S> R = target.rotation() * robot.home().rotation().transpose();
-  std::array<Vec3<S>, 2> w;
+  std::array<std::array<Angle<S>, 3>, 2> w;
   bool gimbal = false, doubleRoot = false;
   const int n = wristCore<S>(J[0].axis, J[1].axis, J[2].axis, R, w, gimbal, doubleRoot);
   if (gimbal) {
@@ -829,8 +969,8 @@ template <class S> Solution<S> solveWrist3R(const SerialRobot<S>& robot, const S
   }
   if (doubleRoot) sol.notes.push_back("double root: the two postures merge (boundary of the reachable set)");
   Raws<S> raws;
-  for (int i = 0; i < n; ++i) raws.push(false).template head<3>() = w[i];
-  finish(robot, target, ResidualMode::Rotation, raws, sol, t0);
+  for (int i = 0; i < n; ++i) raws.push(false, w[i]);
+  finish(robot, target, PoseMatrices<S>(robot, target), ResidualMode::Rotation, raws, sol, t0, 3);
   return sol;
 }
 
@@ -855,14 +995,14 @@ template <class S> Solution<S> solveArm3R(const SerialRobot<S>& robot, const SE3
     const Angle<S>&a3 = pr.a[k], &a1 = pr.b[k];
     const Vec3<S> a = ca.at(a3), b = cb.at(a1);
     bool deg = false;
-    const S a2 = angleAbout<S>(J[1].axis, Vec3<S>(a - J[1].point), Vec3<S>(b - J[1].point), &deg, L2).th;
+    const Angle<S> a2 = angleAbout<S>(J[1].axis, Vec3<S>(a - J[1].point), Vec3<S>(b - J[1].point), &deg, L2);
     if (deg) {
       sol.continuum = true;
       sol.notes.push_back("the point lies on axis 2: θ2 is free (θ2 = 0 returned)");
     }
-    raws.push(pr.nearReal[k]).template head<3>() = Vec3<S>(a1.th, deg ? S(0) : a2, a3.th);
+    raws.push(pr.nearReal[k], std::array<Angle<S>, 3>{a1, deg ? Angle<S>{} : a2, a3});
   }
-  finish(robot, target, ResidualMode::Position, raws, sol, t0);
+  finish(robot, target, PoseMatrices<S>(robot, target), ResidualMode::Position, raws, sol, t0, 3);
   return sol;
 }
 
@@ -871,16 +1011,11 @@ namespace {
 /// Pieper robot with the special triple at joints 4-6 (first = 3) or 2-4 (first = 1); the raw
 /// postures are appended to `raws`.
 template <class S>
-void pieperCore(const SerialRobot<S>& robot, const PieperTriple<S>& tri, const SE3<S>& target, Solution<S>& sol,
+void pieperCore(const SerialRobot<S>& robot, const PieperTriple<S>& tri, const PoseMatrices<S>& pm, Solution<S>& sol,
                 Raws<S>& raws) {
   const auto& J = robot.joints();
   // A = target · home⁻¹ = E1 ··· E6, as matrices.
-  RigidMatrix<S> A;
-  {
-    const Mat3<S> RM = robot.home().rotation();
-    A.R.noalias() = target.rotation() * RM.transpose();
-    A.t = target.translation() - A.R * robot.home().translation();
-  }
+  const RigidMatrix<S> A{pm.RTM, Vec3<S>(pm.tT - pm.RTM * pm.tM)};
   const S L2 = robot.lengthScale() * robot.lengthScale();
   // Sides of the circle pair: (joint, sign, transformed-by-A⁻¹?) and the middle joint.
   int ja, jb, jm, sa, sb, sm;
@@ -927,7 +1062,7 @@ void pieperCore(const SerialRobot<S>& robot, const PieperTriple<S>& tri, const S
     th[ja] = phA;
     th[jb] = phB;
     th[jm] = deg ? Angle<S>{} : signedAngle(sm, psi);
-    std::array<Vec3<S>, 2> tr;
+    std::array<std::array<Angle<S>, 3>, 2> tr;
     int ntr;
     if (tri.concurrent) {  // the wrist needs only the rotation
       // first = 3: RX = (R1 R2 R3)ᵀ RA; first = 1: RX = R1ᵀ RA R6ᵀ R5ᵀ.
@@ -973,11 +1108,8 @@ void pieperCore(const SerialRobot<S>& robot, const PieperTriple<S>& tri, const S
       }
     }
     for (int i = 0; i < ntr; ++i) {
-      Joints6<S>& full = raws.push(pr.nearReal[k]);
-      full(ja) = th[ja].th;
-      full(jb) = th[jb].th;
-      full(jm) = th[jm].th;
-      full.template segment<3>(j0) = tr[i];
+      for (int m = 0; m < 3; ++m) th[j0 + m] = tr[i][m];
+      raws.push(pr.nearReal[k], th);
     }
   }
 }
@@ -1002,8 +1134,9 @@ template <class S> Solution<S> solvePieper(const SerialRobot<S>& robot, const SE
     sol.notes.push_back(std::move(note));
   }
   Raws<S> raws;
+  const PoseMatrices<S> pm(robot, target);
   if (tri.first == 3 || tri.first == 1) {
-    pieperCore(robot, tri, target, sol, raws);
+    pieperCore(robot, tri, pm, sol, raws);
   } else {  // 1-3 or 3-5: solve the reversed robot (T⁻¹ with joints 6..1), where they are 4-6 / 2-4
     const SerialRobot<S> rev = robot.reversed();
     PieperTriple<S> rt = tri;
@@ -1011,10 +1144,12 @@ template <class S> Solution<S> solvePieper(const SerialRobot<S>& robot, const SE
     // the reversed robot's coordinates are the tool-home frame: point p ↦ M⁻¹ p
     rt.point = robot.home().inverse().act(tri.point);
     rt.direction = robot.home().inverse().so3().act(tri.direction);
-    pieperCore(rev, rt, SE3<S>(target.inverse()), sol, raws);
-    for (int k = 0; k < raws.n; ++k) raws.q[k].reverseInPlace();
+    pieperCore(rev, rt, PoseMatrices<S>(rev, SE3<S>(target.inverse())), sol, raws);
+    for (int k = 0; k < raws.n; ++k) raws.reverse(k);
   }
-  finish(robot, target, ResidualMode::Pose, raws, sol, t0);
+  // The postures of one arm solution differ only in the triple's joints: the residuals' forward
+  // kinematics keeps the product of the joints before the triple and of those after it.
+  finish(robot, target, pm, ResidualMode::Pose, raws, sol, t0, tri.first + 3);
   return sol;
 }
 
