@@ -625,18 +625,15 @@ S residualOf(const Vec& q, const PoseMatrices<S>& pm, FkChain<S>& fk,
   return sqrt(std::max<S>(r2, t2 * pm.invL2));
 }
 
-/// An angle wrapped to (−π, π] (kept as it is when it lies there).
-template <class S> S wrapAngle(const S& x) {
-  using std::atan2;
-  if (x > -pi<S>() && x <= pi<S>()) return x;
-  S s, c;
-  sinCos(x, s, c);
-  return atan2(s, c);
-}
 /// Revolute joints wrapped to (−π, π] (SerialRobot::wrap without its copy; in-range values kept).
 template <class S, class Vec> void wrapInPlace(const SerialRobot<S>& robot, Vec& q) {
+  using std::atan2;
   for (int i = 0; i < robot.dof() && i < int(q.size()); ++i)
-    if (robot.joints()[i].type == JointType::Revolute) q(i) = wrapAngle<S>(q(i));
+    if (robot.joints()[i].type == JointType::Revolute && !(q(i) > -pi<S>() && q(i) <= pi<S>())) {
+      S s, c;
+      sinCos(S(q(i)), s, c);
+      q(i) = atan2(s, c);
+    }
 }
 
 /// Newton steps on the posture (full pose: body Jacobian and the SE(3) log; position: the tool
@@ -687,20 +684,16 @@ void finish(const SerialRobot<S>& robot, const SE3<S>& target, const PoseMatrice
   sol.postures.reserve(std::size_t(raws.n));
   sol.residuals.reserve(std::size_t(raws.n));
   std::array<S, 6> offset{};
-  std::array<bool, 6> revolute{};
   bool limited = false;  // some joint has a finite limit
   for (int i = 0; i < n && i < 6; ++i) {
     const auto& j = robot.joints()[i];
     offset[i] = j.offset;
-    revolute[i] = j.type == JointType::Revolute;
     limited = limited || j.lower > -std::numeric_limits<S>::infinity() || j.upper < std::numeric_limits<S>::infinity();
   }
   for (int k = 0; k < raws.n; ++k) {
     Joints6<S> q = raws.q[k];
-    for (int i = 0; i < n; ++i) {  // offsets off, revolute joints wrapped to (−π, π] (wrapInPlace)
-      q(i) -= offset[i];
-      if (revolute[i]) q(i) = wrapAngle<S>(q(i));
-    }
+    for (int i = 0; i < n; ++i) q(i) -= offset[i];
+    wrapInPlace(robot, q);
     // The residual's forward kinematics at q, with cos and sin of q_i + o_i taken from the pair each
     // angle was computed from when the solver kept it (q_i + o_i = atan2(s_i, c_i) up to the rounding
     // of the offset and the wrap by 2π: the pair is cos and sin of it to about 1 ulp, as sin and cos
