@@ -331,16 +331,16 @@ template <class S> bool smallEigenvalues(Work24<S>& H, int n, std::vector<std::c
 template <class S>
 bool deflateExtraneous(Work24<S>& H, const M12<S>& A, const M12<S>& B, const M12<S>& C, S& defect) {
   const M12<S> Re = C - A;
-  MX<S> Z(24, 24);
-  Z.topLeftCorner(12, 12) = Re;
-  Z.topRightCorner(12, 12) = -B;
-  Z.bottomLeftCorner(12, 12) = B;
-  Z.bottomRightCorner(12, 12) = Re;
-  Eigen::FullPivLU<MX<S>> lu(Z);
+  Work24<S> Z;  // fixed-size storage: no allocation, loops of known length
+  Z.template topLeftCorner<12, 12>() = Re;
+  Z.template topRightCorner<12, 12>() = -B;
+  Z.template bottomLeftCorner<12, 12>() = B;
+  Z.template bottomRightCorner<12, 12>() = Re;
+  Eigen::FullPivLU<Work24<S>> lu(Z);
   lu.setThreshold(Tolerance<S>::sqrtEpsilon());
   defect = S(1);
   if (lu.rank() != 16) return false;
-  const MX<S> ker = lu.kernel();
+  const Eigen::Matrix<S, 24, Eigen::Dynamic, 0, 24, 24> ker = lu.kernel();
   Work24<S> W;  // columns 0..7: (Re v, −Im v)
   for (int k = 0; k < 8; ++k)
     for (int i = 0; i < 12; ++i) {
@@ -466,7 +466,7 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
   for (int c = 0; c < 8; ++c) Q.col(c) = H[c + 1];
 
   // Left null space of Q (6×14): the last 6 columns of the Householder Q of Q.
-  Eigen::ColPivHouseholderQR<MX<S>> qr{MX<S>(Q)};
+  Eigen::ColPivHouseholderQR<M14x8<S>> qr(Q);
   const S r00 = abs(qr.matrixQR()(0, 0)), r77 = abs(qr.matrixQR()(7, 7));
   out.qRank = r00 > S(0) ? toDouble(r77 / r00) : 0.0;
   if (!(r77 > Tolerance<S>::rank() * r00)) {
@@ -475,7 +475,7 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
                         toString(toDouble(out.qRank), 3) +
                         "): special geometry, θ1 and θ2 are not determined by elimination");
   }
-  const MX<S> Hq = qr.householderQ();
+  const Eigen::Matrix<S, 14, 14> Hq = qr.householderQ();
   const Eigen::Matrix<S, 6, 14> N = Hq.rightCols(6).transpose();
   std::array<M6x9<S>, 3> Sig;
   for (int k = 0; k < 3; ++k) Sig[k] = N * P[k];
@@ -656,7 +656,7 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
     for (int i4 = 0; i4 < 3; ++i4)
       for (int i5 = 0; i5 < 3; ++i5) m45(i4 * 3 + i5) = t4[i4] * t5[i5];
     const V14<S> rhs = (P[0] + P[1] * c3 + P[2] * s3) * m45;
-    const VX<S> u = qr.solve(VX<S>(rhs));
+    const Eigen::Matrix<S, 8, 1> u = qr.solve(rhs);
     // u = (c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2)
     phi[0] = atan2(u(5), u(2));
     phi[1] = atan2(u(1), u(0));
