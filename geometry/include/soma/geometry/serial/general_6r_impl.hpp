@@ -532,8 +532,13 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
   if (rc > Tolerance<S>::rank()) {
     Work24<S> H = Work24<S>::Zero();
     H.template topRightCorner<12, 12>().setIdentity();
-    H.template bottomLeftCorner<12, 12>() = -luA.solve(C);
-    H.template bottomRightCorner<12, 12>() = -luA.solve(B);
+    {  // −A⁻¹[C B] in one solve with 24 right-hand sides, fixed-size
+      Eigen::Matrix<S, 12, 24> CB;
+      CB << C, B;
+      const Eigen::Matrix<S, 12, 24> X = luA.solve(CB);
+      H.template bottomLeftCorner<12, 12>() = -X.template leftCols<12>();
+      H.template bottomRightCorner<12, 12>() = -X.template rightCols<12>();
+    }
     // The 8 extraneous eigenvalues x3 = ±i are deflated first (the QR iteration on 16×16 costs
     // about (16/24)³ ≈ 0.3 of the 24×24 one); when the deflation is not clean the full matrix is
     // used. Eigenvalues by a fixed-size Francis QR; Eigen's EigenSolver if that does not converge.
