@@ -287,9 +287,9 @@ template <class S> PairRoots<S> solveCirclePair(InvRows<S> FA, InvRows<S> FB, st
     const bool singA = condA <= condB;
     const Mat2<S>& Ms = singA ? MA : MB;  // singular block
     const Mat2<S>& Mr = singA ? MB : MA;  // regular block
-    const S sr = singA ? S(-1) : S(1);    // Ms us + sr·(−1)^… : sign of the regular side in "Ms us = rhs"
-    const Vec2<S> y = leftNull(Ms), z(-y(1), y(0));
     // singA: MA uA = k + MB uB → yᵀMB uB = −yᵀk.  singB: MB uB = MA uA − k → yᵀMA uA = yᵀk.
+    const S sr = singA ? S(-1) : S(1);  // the sign of yᵀk in the regular side's equation
+    const Vec2<S> y = leftNull(Ms), z(-y(1), y(0));
     const Vec2<S> wr = Mr.transpose() * y;
     const TrigPair<S> rr = linearTrig<S>(wr(0), wr(1), S(sr * y.dot(k)));
     TrigPair<S> rrUse = rr;
