@@ -320,8 +320,11 @@ template <class S> bool smallEigenvalues(Work24<S>& H, int n, std::vector<std::c
 /// Deflation of the extraneous eigenvalues x3 = ±i of the companion matrix K of
 /// M(x) = A x² + B x + C (K is 24×24 in the first block of `H`; on success the 16×16 block
 /// with the genuine eigenvalues is left in the first block of `H`). M(i) = (C − A) + iB has a
-/// 4-dimensional kernel (the factor (1 + x3²)⁴ of det M), found as the 8-dimensional real kernel
-/// of Z = [[C − A, −B], [B, C − A]] acting on (Re v, Im v) (full-pivot LU; its rank must be 16).
+/// 4-dimensional kernel (the factor (1 + x3²)⁴ of det M), found by Gaussian elimination with
+/// complete pivoting on the 12×12 complex matrix (in real arithmetic; its rank must be 8, pivots
+/// above √eps of the first): the kernel basis v_1..v_4 gives the 8-dimensional real kernel of
+/// Z = [[C − A, −B], [B, C − A]] acting on (Re w, Im w), w = v_j and i v_j (before: a full-pivot LU
+/// of that 24×24 real Z, 5× the work).
 /// The eigenvectors of K are (v, x v), so {(Re v, −Im v)} spans the real invariant subspace of
 /// ±i; with U the Householder reflectors of a QR of that 24×8 basis, UᵀKU is block upper
 /// triangular and its trailing 16×16 block carries the 16 genuine eigenvalues. `defect` =
@@ -330,23 +333,63 @@ template <class S> bool smallEigenvalues(Work24<S>& H, int n, std::vector<std::c
 // Manocha & Canny (1994) eigenproblem; GF §11.5 (16 postures)
 template <class S>
 bool deflateExtraneous(Work24<S>& H, const M12<S>& A, const M12<S>& B, const M12<S>& C, S& defect) {
-  const M12<S> Re = C - A;
-  Work24<S> Z;  // fixed-size storage: no allocation, loops of known length
-  Z.template topLeftCorner<12, 12>() = Re;
-  Z.template topRightCorner<12, 12>() = -B;
-  Z.template bottomLeftCorner<12, 12>() = B;
-  Z.template bottomRightCorner<12, 12>() = Re;
-  Eigen::FullPivLU<Work24<S>> lu(Z);
-  lu.setThreshold(Tolerance<S>::sqrtEpsilon());
+  M12<S> zr = C - A, zi = B;  // M(i) = zr + i zi, eliminated in place
+  std::array<int, 12> col;    // col[c]: the original column now at position c
+  for (int c = 0; c < 12; ++c) col[c] = c;
   defect = S(1);
-  if (lu.rank() != 16) return false;
-  const Eigen::Matrix<S, 24, Eigen::Dynamic, 0, 24, 24> ker = lu.kernel();
-  Work24<S> W;  // columns 0..7: (Re v, −Im v)
-  for (int k = 0; k < 8; ++k)
-    for (int i = 0; i < 12; ++i) {
-      W(i, k) = ker(i, k);
-      W(12 + i, k) = -ker(12 + i, k);
+  const S thr2 = Tolerance<S>::epsilon();  // (√eps)²: pivots compared in squared modulus
+  S first2 = S(0);
+  int rank = 0;
+  for (int k = 0; k < 12; ++k) {
+    int p = k, q = k;
+    S best = S(-1);
+    for (int j = k; j < 12; ++j)
+      for (int i = k; i < 12; ++i) {
+        const S m2 = zr(i, j) * zr(i, j) + zi(i, j) * zi(i, j);
+        if (m2 > best) best = m2, p = i, q = j;
+      }
+    if (k == 0) first2 = best;
+    if (!(best > thr2 * first2) || !(best > S(0))) break;
+    zr.row(k).swap(zr.row(p));
+    zi.row(k).swap(zi.row(p));
+    zr.col(k).swap(zr.col(q));
+    zi.col(k).swap(zi.col(q));
+    std::swap(col[k], col[q]);
+    const S pr = zr(k, k), pim = zi(k, k), inv = S(1) / best;  // 1 / pivot = conj(pivot) / |pivot|²
+    for (int i = k + 1; i < 12; ++i) {
+      const S fr = (zr(i, k) * pr + zi(i, k) * pim) * inv, fi = (zi(i, k) * pr - zr(i, k) * pim) * inv;
+      for (int j = k + 1; j < 12; ++j) {
+        zr(i, j) -= fr * zr(k, j) - fi * zi(k, j);
+        zi(i, j) -= fr * zi(k, j) + fi * zr(k, j);
+      }
+      zr(i, k) = zi(i, k) = S(0);
     }
+    rank = k + 1;
+  }
+  if (rank != 8) return false;
+  Work24<S> W;  // columns 2j, 2j + 1: (Re w, −Im w) for w = v_j and i v_j
+  for (int j = 0; j < 4; ++j) {
+    // Kernel vector in the permuted order: y_{8+j} = 1, the others of 8..11 zero, y_0..7 from U11 y = −U12 e_j.
+    std::array<S, 12> yr{}, yi{};
+    yr[8 + j] = S(1);
+    for (int r = 7; r >= 0; --r) {
+      S sr = -zr(r, 8 + j), si = -zi(r, 8 + j);
+      for (int c = r + 1; c < 8; ++c) {
+        sr -= zr(r, c) * yr[c] - zi(r, c) * yi[c];
+        si -= zr(r, c) * yi[c] + zi(r, c) * yr[c];
+      }
+      const S d2 = zr(r, r) * zr(r, r) + zi(r, r) * zi(r, r);
+      yr[r] = (sr * zr(r, r) + si * zi(r, r)) / d2;
+      yi[r] = (si * zr(r, r) - sr * zi(r, r)) / d2;
+    }
+    for (int c = 0; c < 12; ++c) {
+      const int i = col[c];
+      W(i, 2 * j) = yr[c];
+      W(12 + i, 2 * j) = -yi[c];
+      W(i, 2 * j + 1) = -yi[c];
+      W(12 + i, 2 * j + 1) = -yr[c];
+    }
+  }
   const S kn = H.norm();
   Work24<S> K = H;
   std::array<S, 24> x, v;
