@@ -132,6 +132,56 @@ template <class S> S halfAngleFromPairs(const S& num, const S& den) {
   return S(2) * atan2(num, den);
 }
 
+/// LU factorisation with partial pivoting of a 12×12 matrix in row-major fixed arrays, factored
+/// once and solved several times (the inverse iteration of each real root): Eigen's PartialPivLU
+/// takes ~9k instructions to factor at this size, this ~2k; detail::smallSolveInPlace eliminates
+/// again for every right-hand side. `ok` is false when a pivot is exactly zero.
+template <class S> struct Lu12 {
+  S a[12][12];
+  int perm[12];
+  bool ok = true;
+  explicit Lu12(const M12<S>& m) {
+    using std::abs;
+    for (int i = 0; i < 12; ++i) {
+      perm[i] = i;
+      for (int j = 0; j < 12; ++j) a[i][j] = m(i, j);
+    }
+    for (int c = 0; c < 12; ++c) {
+      int p = c;
+      S best = abs(a[c][c]);
+      for (int r = c + 1; r < 12; ++r)
+        if (abs(a[r][c]) > best) best = abs(a[r][c]), p = r;
+      if (best == S(0)) {
+        ok = false;
+        return;
+      }
+      if (p != c) {
+        for (int j = 0; j < 12; ++j) std::swap(a[p][j], a[c][j]);
+        std::swap(perm[p], perm[c]);
+      }
+      for (int r = c + 1; r < 12; ++r) {
+        const S f = a[r][c] / a[c][c];
+        a[r][c] = f;
+        for (int j = c + 1; j < 12; ++j) a[r][j] -= f * a[c][j];
+      }
+    }
+  }
+  /// b ← M⁻¹ b (forward substitution with the unit lower factor, then back substitution).
+  void solve(Eigen::Matrix<S, 12, 1>& b) const {
+    S y[12];
+    for (int i = 0; i < 12; ++i) {
+      S v = b(perm[i]);
+      for (int k = 0; k < i; ++k) v -= a[i][k] * y[k];
+      y[i] = v;
+    }
+    for (int i = 11; i >= 0; --i) {
+      S v = y[i];
+      for (int k = i + 1; k < 12; ++k) v -= a[i][k] * b(k);
+      b(i) = v / a[i][i];
+    }
+  }
+};
+
 /// Working storage of the small eigenproblems: a fixed 24×24 array, the active size n ≤ 24.
 template <class S> using Work24 = Eigen::Matrix<S, 24, 24>;
 
@@ -665,15 +715,15 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
   // Back-substitution for each real x3.
   for (const S& x : reals) {
     const M12<S> M = (A * x + B) * x + C;
-    const Eigen::PartialPivLU<M12<S>> lu(M);
+    const Lu12<S> lu(M);
     Eigen::Matrix<S, 12, 1> v = Eigen::Matrix<S, 12, 1>::Ones();
-    for (int it = 0; it < 2; ++it) {
-      v = lu.solve(v);
+    for (int it = 0; it < 2 && lu.ok; ++it) {
+      lu.solve(v);
       const S n2 = v.squaredNorm();
       if (!(n2 > S(0)) || !isFinite(n2)) break;
       v /= sqrt(n2);
     }
-    if (!allFinite(v)) {  // an exact zero pivot: the kernel from a full-pivot LU
+    if (!lu.ok || !allFinite(v)) {  // an exact zero pivot: the kernel from a full-pivot LU
       Eigen::FullPivLU<MX<S>> flu{MX<S>(M)};
       flu.setThreshold(Tolerance<S>::sqrtEpsilon());
       const auto ker = flu.kernel();
