@@ -4,6 +4,7 @@
 // Medians per pose over a fixed pool of random poses (seed 7). KDL's LMA returns ONE posture
 // near its seed; soma's closed forms return all of them (8 for the PUMA) — the rows say so.
 #include "soma/geometry/serial/closed_form_ik.hpp"
+#include "soma/geometry/serial/example_robots.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -74,6 +75,22 @@ void BM_soma_ik_pieper_puma_all8(benchmark::State& st) {
   st.counters["postures/pose"] = double(postures) / double(n);
 }
 BENCHMARK(BM_soma_ik_pieper_puma_all8);
+
+// UR5 (axes 2-4 parallel, 5 and 6 meeting): every real posture, same joint pool.
+void BM_soma_ik_pieper_ur5_all(benchmark::State& st) {
+  const SerialRobot<S> ur5 = ur5Robot<S>();
+  std::vector<SE3<S>> targets;
+  for (const auto& q : pool().q) targets.push_back(ur5.fk(q));
+  std::size_t i = 0, postures = 0, n = 0;
+  for (auto _ : st) {
+    const auto sol = solvePieper(ur5, targets[i++ % kPool]);
+    postures += sol.count();
+    ++n;
+    benchmark::DoNotOptimize(sol);
+  }
+  st.counters["postures/pose"] = double(postures) / double(n);
+}
+BENCHMARK(BM_soma_ik_pieper_ur5_all);
 
 void BM_soma_ik_arm3r(benchmark::State& st) {
   std::vector<SerialJoint<S>> js(3);

@@ -14,6 +14,9 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <type_traits>
 
 namespace soma {
 
@@ -21,12 +24,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-template <class S> Mat3<S> rodrigues(const Vec3<S>& v, const S& th) {
-  using std::cos;
-  using std::sin;
-  const Mat3<S> K = skew(v);
-  return Mat3<S>::Identity() + sin(th) * K + (S(1) - cos(th)) * (K * K);
-}
 
 /// w rotated about the unit axis v by the angle with cosine c and sine s (Rodrigues' formula
 /// c w + s v × w + (1 − c)(v·w) v, without forming the matrix).
@@ -34,12 +31,56 @@ template <class S> Vec3<S> rotateAbout(const Vec3<S>& v, const S& c, const S& s,
   return c * w + s * v.cross(w) + ((S(1) - c) * v.dot(w)) * v;
 }
 
-/// Signed angle of the rotation about unit v taking a to b (both taken relative to a point of
-/// the axis and projected on the plane ⟂ v). `degenerate` when a lies on the axis.
-// GF §5.2.1, GF-5.2.1-theta2-recovery (corrected, erratum E5.6: |v×(a−r)|² and b − r)
-template <class S> S angleAbout(const Vec3<S>& v, const Vec3<S>& a, const Vec3<S>& b,
-                               bool* degenerate, const S& scale2) {
+
+/// sin and cos of one argument: one libm call (sincos) for float, double and long double.
+template <class S> inline void sinCos(const S& x, S& s, S& c) {
+  if constexpr (std::is_same_v<S, double>) {
+    ::sincos(x, &s, &c);
+  } else if constexpr (std::is_same_v<S, float>) {
+    ::sincosf(x, &s, &c);
+  } else if constexpr (std::is_same_v<S, long double>) {
+    ::sincosl(x, &s, &c);
+  } else {
+    using std::cos;
+    using std::sin;
+    s = sin(x);
+    c = cos(x);
+  }
+}
+
+/// An angle with its cosine and sine, carried together so that later steps need no sin or cos.
+template <class S> struct Angle {
+  S th = S(0), c = S(1), s = S(0);
+};
+/// The angle of the vector (x, y) with (cos, sin) = (x, y) / |(x, y)|; angle 0 for the zero vector.
+template <class S> Angle<S> angleOf(const S& y, const S& x) {
   using std::atan2;
+  using std::hypot;
+  using std::sqrt;
+  const S r2 = x * x + y * y;
+  // |(x, y)|² in range: one square root; else (underflow or overflow of the squares) hypot.
+  const S r = r2 > std::numeric_limits<S>::min() && r2 < std::numeric_limits<S>::max() ? sqrt(r2) : hypot(x, y);
+  if (!(r > S(0))) return {};
+  const S ir = S(1) / r;
+  return {atan2(y, x), x * ir, y * ir};
+}
+/// An angle given by its value: (θ, cos θ, sin θ).
+template <class S> Angle<S> angleFrom(const S& th) {
+  Angle<S> a;
+  a.th = th;
+  sinCos(th, a.s, a.c);
+  return a;
+}
+/// σ·φ for σ = ±1.
+template <class S> Angle<S> signedAngle(int sigma, const Angle<S>& a) {
+  return sigma > 0 ? a : Angle<S>{S(-a.th), a.c, S(-a.s)};
+}
+
+/// Signed angle of the rotation about unit v taking a to b (both taken relative to a point of
+/// the axis and projected on the plane ⟂ v), with its cosine and sine. `degenerate` when a lies on the axis.
+// GF §5.2.1, GF-5.2.1-theta2-recovery (corrected, erratum E5.6: |v×(a−r)|² and b − r)
+template <class S> Angle<S> angleAbout(const Vec3<S>& v, const Vec3<S>& a, const Vec3<S>& b,
+                                      bool* degenerate, const S& scale2) {
   const Vec3<S> ap = a - v * v.dot(a), bp = b - v * v.dot(b);
   // On the axis when |a′| ≤ √eps · scale: the accuracy of a point computed from a double root of
   // the positioning quartic (a pose on the singularity). (|a′|² ≤ 1024 eps · scale², i.e. 32√eps,
@@ -49,18 +90,15 @@ template <class S> S angleAbout(const Vec3<S>& v, const Vec3<S>& a, const Vec3<S
   // measured 2026-12-02 after the faster SE(3) compose of 3-4 ulps) splits a double root by √(k ε), so
   // the test is |a′|² ≤ 16 eps · scale² (√(16 eps) = 4√eps: 6e-8 in double, 0.14 % of the scale in float).
   if (degenerate) *degenerate = ap.squaredNorm() <= S(16) * Tolerance<S>::epsilon() * scale2;
-  return atan2(v.dot(ap.cross(bp)), ap.dot(bp));
+  return angleOf<S>(v.dot(ap.cross(bp)), ap.dot(bp));
 }
 
 /// A point (or a plane) turning about a line: x(φ) = c0 + cc cos φ + cs sin φ.
 template <class S> struct Circle {
   Vec3<S> c0, cc, cs;
-  Vec3<S> at(const S& phi) const {
-    using std::cos;
-    using std::sin;
-    return c0 + cc * cos(phi) + cs * sin(phi);
-  }
+  Vec3<S> at(const Angle<S>& phi) const { return c0 + cc * phi.c + cs * phi.s; }
 };
+
 /// x turned about the line (v, r) by σφ, σ = ±1. GF §5.2.1, GF-5.2.1-revolute-joint-exp
 template <class S> Circle<S> circleOf(const Vec3<S>& v, const Vec3<S>& r, const Vec3<S>& x, int sigma) {
   const Vec3<S> u = x - r;
@@ -134,12 +172,65 @@ template <class S> std::vector<S> realRootsOf(const std::vector<S>& t, const std
   return out;
 }
 
+
+/// Up to two roots of p cos φ + q sin φ = k with their cosines and sines (solveLinearTrig's rule).
+template <class S> struct TrigPair {
+  std::array<Angle<S>, 2> a;
+  int n = 0;
+  bool free = false;
+  bool doubleRoot = false;
+};
+// GF §5.1, GF-5.1-wrist-theta2: φ = β ∓ h with β = atan2(q, p), h = atan2(√disc, k); the cosine and
+// sine of β ∓ h by the sum formulas, (p k ± q √disc, q k ∓ p √disc) / ρ², without sin or cos.
+template <class S> TrigPair<S> linearTrig(const S& p, const S& q, const S& k) {
+  using std::abs;
+  using std::sqrt;
+  using std::atan2;
+  TrigPair<S> out;
+  const S rho2 = p * p + q * q;
+  const S scale2 = std::max<S>(rho2, k * k);  // scale² with scale = max(ρ, |k|)
+  if (rho2 <= Tolerance<S>::rank() * Tolerance<S>::rank() * scale2 || scale2 == S(0)) {
+    const S scale = sqrt(scale2);
+    out.free = abs(k) <= Tolerance<S>::rank() * (scale > S(0) ? scale : S(1)) || scale == S(0);
+    return out;  // p = q = 0: no solution unless k = 0 too
+  }
+  S disc = rho2 - k * k;
+  bool clamped = false;
+  if (disc < S(0)) {
+    if (-disc > Tolerance<S>::rank() * rho2) return out;  // unreachable
+    disc = S(0);
+    clamped = true;
+  }
+  if (disc <= Tolerance<S>::rank() * rho2) out.doubleRoot = true;
+  const S sd = sqrt(disc);
+  const S x0 = p * k + q * sd, y0 = q * k - p * sd, x1 = p * k - q * sd, y1 = q * k + p * sd;
+  if (clamped) {  // k² slightly above ρ²: normalise each pair by its length
+    out.a[0] = angleOf<S>(y0, x0);
+    out.a[1] = angleOf<S>(y1, x1);
+  } else {  // |(x, y)|² = ρ² (k² + disc) = ρ⁴: the pair over ρ² is (cos φ, sin φ)
+    const S inv = S(1) / rho2;
+    out.a[0] = {atan2(y0, x0), x0 * inv, y0 * inv};
+    out.a[1] = {atan2(y1, x1), x1 * inv, y1 * inv};
+  }
+  out.n = 2;
+  return out;
+}
+
+/// The real (φA, φB) of a circle pair (at most 4; capacity for the near-real candidates too).
 template <class S> struct PairRoots {
-  std::vector<std::pair<S, S>> angles;  // (φA, φB)
+  static constexpr int kMax = 8;
+  std::array<Angle<S>, kMax> a, b;
+  std::array<char, kMax> nearReal{};  ///< from a near-real complex pair (a candidate)
+  int n = 0;
   bool continuum = false;
   bool doubleRoot = false;
-  std::vector<char> nearReal;  ///< per entry of angles: from a near-real complex pair (a candidate)
-  std::vector<std::string> notes;
+  void add(const Angle<S>& x, const Angle<S>& y, bool candidate) {
+    if (n == kMax) throw std::logic_error("closed form: more circle-pair roots than a quartic has");
+    a[n] = x;
+    b[n] = y;
+    nearReal[n] = candidate ? 1 : 0;
+    ++n;
+  }
 };
 
 /// Smallest-singular left vector y of a 2×2 matrix (yᵀM ≈ 0 when M is singular).
@@ -155,17 +246,19 @@ template <class S> Vec2<S> leftNull(const Mat2<S>& M) {
   return y.normalized();
 }
 
+
 /// FA·(1, cos φA, sin φA) = FB·(1, cos φB, sin φB): up to 4 real (φA, φB). The 2×2 block of the
 /// better-conditioned side is inverted and c² + s² = 1 of the other side gives a quartic in
 /// t = tan(ψ/2), φ = φ0 + ψ with φ0 chosen so that ψ = π is far from a root (the quartic's
-/// leading coefficient is the conic's value there). When both blocks are singular the system
-/// decouples into one equation per angle (the PUMA case: axes 1, 2 meet and 2 ∥ 3).
+/// leading coefficient is the conic's value there). When one block is singular (to a rank
+/// decision) its left null vector gives an equation in the other angle alone, and each of its
+/// roots one equation in the first (the UR case: axes 5, 6 meet); when both blocks are singular
+/// the system decouples into one equation per angle (the PUMA case: axes 1, 2 meet and 2 ∥ 3).
+/// Notes go to `notes`.
 // GF §5.2.1, GF-5.2.1-3r-ik-procedure (pencil of conics → tan-half-angle quartic; singular 2×2
 // system → eliminate the other angle)
-template <class S> PairRoots<S> solveCirclePair(InvRows<S> FA, InvRows<S> FB) {
+template <class S> PairRoots<S> solveCirclePair(InvRows<S> FA, InvRows<S> FB, std::vector<std::string>& notes) {
   using std::abs;
-  using std::atan;
-  using std::atan2;
   using std::cos;
   using std::sin;
   PairRoots<S> out;
@@ -173,7 +266,7 @@ template <class S> PairRoots<S> solveCirclePair(InvRows<S> FA, InvRows<S> FB) {
     const S s = std::max<S>(FA.row(i).cwiseAbs().maxCoeff(), FB.row(i).cwiseAbs().maxCoeff());
     if (s == S(0)) {
       out.continuum = true;
-      out.notes.push_back("invariant equation " + std::to_string(i + 1) + " vanishes identically");
+      notes.push_back("invariant equation " + std::to_string(i + 1) + " vanishes identically");
       return out;
     }
     FA.row(i) /= s;
@@ -186,7 +279,46 @@ template <class S> PairRoots<S> solveCirclePair(InvRows<S> FA, InvRows<S> FB) {
     return n2 > S(0) ? S(abs(M.determinant()) / n2) : S(0);
   };
   const S condA = rel(MA), condB = rel(MB);
-  if (std::max<S>(condA, condB) > Tolerance<S>::sqrtEpsilon()) {
+  const bool bothSingular = !(std::max<S>(condA, condB) > Tolerance<S>::sqrtEpsilon());
+  if (!bothSingular && std::min<S>(condA, condB) <= Tolerance<S>::rank()) {
+    // Triangular: the singular side's left null vector y eliminates its angle (yᵀM_sing = 0), giving
+    // an equation in the other angle alone; for each root the rest, projected on z ⟂ y (the range of
+    // M_sing), is one equation in the singular side's angle. MA uA − MB uB = k.
+    const bool singA = condA <= condB;
+    const Mat2<S>& Ms = singA ? MA : MB;  // singular block
+    const Mat2<S>& Mr = singA ? MB : MA;  // regular block
+    // singA: MA uA = k + MB uB → yᵀMB uB = −yᵀk.  singB: MB uB = MA uA − k → yᵀMA uA = yᵀk.
+    const S sr = singA ? S(-1) : S(1);  // the sign of yᵀk in the regular side's equation
+    const Vec2<S> y = leftNull(Ms), z(-y(1), y(0));
+    const Vec2<S> wr = Mr.transpose() * y;
+    const TrigPair<S> rr = linearTrig<S>(wr(0), wr(1), S(sr * y.dot(k)));
+    TrigPair<S> rrUse = rr;
+    if (rr.free) {
+      out.continuum = true;
+      notes.push_back(singA ? "the second angle is free (0 returned)" : "the first angle is free (0 returned)");
+      rrUse.n = 1;
+      rrUse.a[0] = Angle<S>{};
+    }
+    out.doubleRoot = rr.doubleRoot;
+    const Vec2<S> ws = Ms.transpose() * z;
+    for (int i = 0; i < rrUse.n; ++i) {
+      const Angle<S>& ur = rrUse.a[i];
+      const Vec2<S> uRegular(ur.c, ur.s);
+      // singA: rhs = k + MB uB; singB: rhs = MA uA − k.
+      const Vec2<S> rhs = singA ? Vec2<S>(k + Mr * uRegular) : Vec2<S>(Mr * uRegular - k);
+      const TrigPair<S> rs = linearTrig<S>(ws(0), ws(1), z.dot(rhs));
+      if (rs.doubleRoot) out.doubleRoot = true;
+      if (rs.free) {
+        out.continuum = true;
+        notes.push_back(singA ? "the first angle is free (0 returned)" : "the second angle is free (0 returned)");
+        out.add(singA ? Angle<S>{} : ur, singA ? ur : Angle<S>{}, false);
+        continue;
+      }
+      for (int j = 0; j < rs.n; ++j) out.add(singA ? rs.a[j] : ur, singA ? ur : rs.a[j], false);
+    }
+    return out;
+  }
+  if (!bothSingular) {
     // u_free = (cos, sin) of the quartic's angle, u_dep = P u_free + m.
     const bool freeIsB = condA >= condB;
     Mat2<S> P;
@@ -213,8 +345,10 @@ template <class S> PairRoots<S> solveCirclePair(InvRows<S> FA, InvRows<S> FB) {
         phi0 = ph;
       }
     }
+    S c0, s0;
+    sinCos(phi0, s0, c0);
     Mat2<S> R0;
-    R0 << cos(phi0), -sin(phi0), sin(phi0), cos(phi0);
+    R0 << c0, -s0, s0, c0;
     const Mat2<S> Gp = R0.transpose() * G * R0;
     const Vec2<S> hp = R0.transpose() * h;
     const std::array<S, 5> c = {Gp(0, 0) + S(2) * hp(0) + e, S(4) * Gp(0, 1) + S(4) * hp(1),
@@ -227,7 +361,7 @@ template <class S> PairRoots<S> solveCirclePair(InvRows<S> FA, InvRows<S> FB) {
     std::size_t strict = 0;  // ts[0..strict) are roots to round-off, the rest near-real candidates
     if (cmax <= Tolerance<S>::rank() * cscale) {
       out.continuum = true;
-      out.notes.push_back("the conic vanishes on the whole circle: one angle is free (0 returned)");
+      notes.push_back("the conic vanishes on the whole circle: one angle is free (0 returned)");
       ts.push_back(S(0));  // ψ = 0: φ = φ0
     } else {
       // The quartic's roots are computed once (Aberth) and split here as quarticRealRoots does
@@ -259,117 +393,255 @@ template <class S> PairRoots<S> solveCirclePair(InvRows<S> FA, InvRows<S> FB) {
       }
     }
     for (std::size_t i = 0; i < ts.size(); ++i) {
-      const S phiFree = phi0 + S(2) * atan(ts[i]);
-      const Vec2<S> uf(cos(phiFree), sin(phiFree));
-      const Vec2<S> ud = P * uf + m;
-      const S phiDep = atan2(ud(1), ud(0));
+      // ψ = 2 atan t: (cos ψ, sin ψ) = (1 − t², 2t) / (1 + t²) (in u = 1/t for |t| > 1), turned by φ0.
+      const S t = ts[i];
+      S cp, sp;
+      if (abs(t) <= S(1)) {
+        const S d = S(1) + t * t;
+        cp = (S(1) - t * t) / d;
+        sp = S(2) * t / d;
+      } else {
+        const S u = S(1) / t, d = S(1) + u * u;
+        cp = (u * u - S(1)) / d;
+        sp = S(2) * u / d;
+      }
+      const Angle<S> phiFree = angleOf<S>(s0 * cp + c0 * sp, c0 * cp - s0 * sp);
+      const Vec2<S> ud = P * Vec2<S>(phiFree.c, phiFree.s) + m;
+      const Angle<S> phiDep = angleOf<S>(ud(1), ud(0));
       if (i > 0 && abs(ts[i] - ts[i - 1]) <= Tolerance<S>::input() * (S(1) + abs(ts[i])))
         out.doubleRoot = true;
-      out.angles.emplace_back(freeIsB ? phiDep : phiFree, freeIsB ? phiFree : phiDep);
-      out.nearReal.push_back(i >= strict && !out.continuum ? 1 : 0);
+      out.add(freeIsB ? phiDep : phiFree, freeIsB ? phiFree : phiDep, i >= strict && !out.continuum);
     }
     return out;
   }
   // Decoupled: yᵀ MA = 0 gives an equation in φB alone, zᵀ MB = 0 one in φA alone.
   const Vec2<S> y = leftNull(MA), z = leftNull(MB);
   const Vec2<S> wB = MB.transpose() * y, wA = MA.transpose() * z;
-  const TrigRoots<S> rB = solveLinearTrig<S>(wB(0), wB(1), -y.dot(k));
-  const TrigRoots<S> rA = solveLinearTrig<S>(wA(0), wA(1), z.dot(k));
-  out.notes.push_back("the invariant equations decouple (each involves one angle)");
-  std::vector<S> aA = rA.angles, aB = rB.angles;
+  TrigPair<S> rB = linearTrig<S>(wB(0), wB(1), -y.dot(k));
+  TrigPair<S> rA = linearTrig<S>(wA(0), wA(1), z.dot(k));
+  notes.push_back("the invariant equations decouple (each involves one angle)");
   if (rA.free) {
-    aA = {S(0)};
+    rA.n = 1;
+    rA.a[0] = Angle<S>{};
     out.continuum = true;
-    out.notes.push_back("the first angle is free (0 returned)");
+    notes.push_back("the first angle is free (0 returned)");
   }
   if (rB.free) {
-    aB = {S(0)};
+    rB.n = 1;
+    rB.a[0] = Angle<S>{};
     out.continuum = true;
-    out.notes.push_back("the second angle is free (0 returned)");
+    notes.push_back("the second angle is free (0 returned)");
   }
   out.doubleRoot = rA.doubleRoot || rB.doubleRoot;
-  for (const auto& a : aA)
-    for (const auto& b : aB) {
-      out.angles.emplace_back(a, b);
-      out.nearReal.push_back(0);
-    }
+  for (int i = 0; i < rA.n; ++i)
+    for (int j = 0; j < rB.n; ++j) out.add(rA.a[i], rB.a[j], false);
   return out;
 }
 
 enum class ResidualMode { Pose, Position, Rotation };
 
-/// Forward kinematics with rotation matrices (no quaternions), for the residuals:
-/// e^{(q1 + o1) ξ1} ··· e^{(qn + on) ξn} · M (SerialRobot::fk's product of exponentials, GF §4.5).
-template <class S>
-void fkMatrix(const SerialRobot<S>& robot, const JointVector<S>& q, const Mat3<S>& RM, const Vec3<S>& tM,
-              Mat3<S>& R, Vec3<S>& t) {
-  using std::cos;
-  using std::sin;
-  R.setIdentity();
-  t.setZero();
-  const auto& J = robot.joints();
-  for (int i = 0; i < robot.dof(); ++i) {
-    const Vec3<S>& v = J[i].axis;
-    const S th = q(i) + J[i].offset;
-    if (J[i].type == JointType::Prismatic) {
-      t += R * (v * th);
-      continue;
-    }
-    const S c = cos(th), s = sin(th), c1 = S(1) - c;
-    Mat3<S> Ri;  // Rodrigues: c I + s [v]× + (1 − c) v vᵀ
-    Ri << c + c1 * v.x() * v.x(), c1 * v.x() * v.y() - s * v.z(), c1 * v.x() * v.z() + s * v.y(),  //
-        c1 * v.y() * v.x() + s * v.z(), c + c1 * v.y() * v.y(), c1 * v.y() * v.z() - s * v.x(),    //
-        c1 * v.z() * v.x() - s * v.y(), c1 * v.z() * v.y() + s * v.x(), c + c1 * v.z() * v.z();
-    const Vec3<S>& p = J[i].point;
-    t += R * Vec3<S>(p - Ri * p);
-    R = (R * Ri).eval();
-  }
-  t += R * tM;
-  R = (R * RM).eval();
-}
+/// A fixed-size joint vector inside the solvers (3 or 6 joints used; no allocation).
+template <class S> using Joints6 = Eigen::Matrix<S, 6, 1>;
 
-/// The target and home pose as matrices, computed once per solve.
-template <class S> struct PoseMatrices {
-  Mat3<S> RT, RM;
-  Vec3<S> tT, tM;
-  PoseMatrices(const SerialRobot<S>& robot, const SE3<S>& target)
-      : RT(target.rotation()), RM(robot.home().rotation()), tT(target.translation()),
-        tM(robot.home().translation()) {}
+/// The raw postures of one solve (joint values before the offsets), with the candidate flags.
+/// With `trig` set, c and s hold the cosine and sine each angle was computed from (q = atan2(s, c)),
+/// which the residual's forward kinematics uses instead of calling sin and cos again.
+template <class S> struct Raws {
+  static constexpr int kMax = 16;
+  std::array<Joints6<S>, kMax> q, c, s;
+  std::array<char, kMax> cand{}, trig{};
+  int n = 0;
+  Joints6<S>& push(bool candidate) {
+    if (n == kMax) throw std::logic_error("closed form: more raw postures than the class has");
+    cand[n] = candidate ? 1 : 0;
+    trig[n] = 0;
+    q[n].setZero();
+    return q[n++];
+  }
+  /// A posture given by its angles with their cosines and sines (joints 0..size−1).
+  template <std::size_t N> void push(bool candidate, const std::array<Angle<S>, N>& a) {
+    push(candidate);
+    const int k = n - 1;
+    trig[k] = 1;
+    for (std::size_t i = 0; i < N; ++i) {
+      q[k](int(i)) = a[i].th;
+      c[k](int(i)) = a[i].c;
+      s[k](int(i)) = a[i].s;
+    }
+  }
+  /// Joints reversed (a posture of the reversed robot: same values, same cosines and sines).
+  void reverse(int k) {
+    q[k].reverseInPlace();
+    c[k].reverseInPlace();
+    s[k].reverseInPlace();
+  }
 };
 
-template <class S>
-S residualOf(const SerialRobot<S>& robot, const JointVector<S>& q, const PoseMatrices<S>& pm, ResidualMode mode) {
+/// The target and home pose as matrices, computed once per solve; RTM = R* R_Mᵀ, the rotation the
+/// joints' product must reach (‖R(q) R_M − R*‖_F = ‖R(q) − R* R_Mᵀ‖_F, R_M orthogonal).
+template <class S> struct PoseMatrices {
+  Mat3<S> RT, RM, RTM;
+  Vec3<S> tT, tM;
+  S invL, invL2;  ///< 1 / L and 1 / L² of the robot's length scale
+  PoseMatrices(const SerialRobot<S>& robot, const SE3<S>& target)
+      : RT(target.rotation()), RM(robot.home().rotation()), tT(target.translation()),
+        tM(robot.home().translation()), invL(S(1) / robot.lengthScale()), invL2(invL * invL) {
+    RTM.noalias() = RT * RM.transpose();
+  }
+};
+
+/// Forward kinematics of the joints' product e^{(q1 + o1) ξ1} ··· e^{(qn + on) ξn} (SerialRobot::fk's
+/// product of exponentials, GF §4.5) in rotation matrices, for the residuals. Each revolute factor is
+/// Rodrigues' R_i = c I + s [v]× + (1 − c) v vᵀ with the translation p − R_i p = (1 − c) p⊥ − s v × p
+/// (p⊥ = p − v (v·p)), from one sincos. The product is kept in two parts, the joints before `split`
+/// (from the base) and from `split` on (from the tool), each with its partial products: the next
+/// posture that shares leading or trailing joint values (bit for bit: the postures of one arm solution,
+/// which differ only in the three joints of the Pieper triple) starts from them. Plain scalar arrays
+/// (3×3 products in Eigen's packets cost twice as much here).
+template <class S> class FkChain {
+ public:
+  FkChain(const SerialRobot<S>& robot, int split) : n_(robot.dof()), split_(std::clamp(split, 0, robot.dof())) {
+    const auto& J = robot.joints();
+    for (int i = 0; i < n_ && i < 6; ++i) {
+      const Vec3<S>& v = J[i].axis;
+      const Vec3<S>& p = J[i].point;
+      Joint& j = j_[i];
+      for (int k = 0; k < 3; ++k) j.v[k] = v(k);
+      j.vv[0] = v.x() * v.x(), j.vv[1] = v.y() * v.y(), j.vv[2] = v.z() * v.z();
+      j.vv[3] = v.x() * v.y(), j.vv[4] = v.x() * v.z(), j.vv[5] = v.y() * v.z();
+      const Vec3<S> pp = p - v * v.dot(p), w = v.cross(p);
+      for (int k = 0; k < 3; ++k) j.pp[k] = pp(k), j.w[k] = w(k);
+      j.offset = J[i].offset;
+      j.prismatic = J[i].type == JointType::Prismatic;
+    }
+    for (int k = 0; k < 9; ++k) PR_[0][k] = SR_[n_][k] = k % 4 == 0 ? S(1) : S(0);
+    for (int k = 0; k < 3; ++k) Pt_[0][k] = St_[n_][k] = S(0);
+    validS_ = n_;
+  }
+  /// The product's rotation R (row-major) and translation t for the joint values q.
+  /// `c`, `s` (optional): cos and sin of each q_i + o_i, else computed here.
+  template <class Vec> void eval(const Vec& q, S (&R)[9], S (&t)[3], const S* c = nullptr, const S* s = nullptr) {
+    int m = 0;  // leading joints shared with the cached prefix
+    while (m < validP_ && q(m) == qp_[m]) ++m;
+    for (int i = m; i < split_; ++i) {
+      qp_[i] = q(i);
+      S Ri[9], d[3];
+      factor(i, q(i), Ri, d, c, s);
+      const S *A = PR_[i], *ta = Pt_[i];
+      S *B = PR_[i + 1], *tb = Pt_[i + 1];
+      for (int r = 0; r < 3; ++r) {  // (A, ta)·(Ri, d) = (A Ri, A d + ta)
+        const S a0 = A[3 * r], a1 = A[3 * r + 1], a2 = A[3 * r + 2];
+        tb[r] = ta[r] + a0 * d[0] + a1 * d[1] + a2 * d[2];
+        B[3 * r] = a0 * Ri[0] + a1 * Ri[3] + a2 * Ri[6];
+        B[3 * r + 1] = a0 * Ri[1] + a1 * Ri[4] + a2 * Ri[7];
+        B[3 * r + 2] = a0 * Ri[2] + a1 * Ri[5] + a2 * Ri[8];
+      }
+    }
+    validP_ = split_;
+    int k = n_;  // trailing joints k..n−1 shared with the cached suffix
+    while (k > split_ && k - 1 >= validS_ && q(k - 1) == qs_[k - 1]) --k;
+    for (int i = k - 1; i >= split_; --i) {
+      qs_[i] = q(i);
+      S Ri[9], d[3];
+      factor(i, q(i), Ri, d, c, s);
+      const S *A = SR_[i + 1], *ta = St_[i + 1];
+      S *B = SR_[i], *tb = St_[i];
+      for (int r = 0; r < 3; ++r) {  // (Ri, d)·(A, ta) = (Ri A, Ri ta + d)
+        tb[r] = d[r] + Ri[3 * r] * ta[0] + Ri[3 * r + 1] * ta[1] + Ri[3 * r + 2] * ta[2];
+        for (int c = 0; c < 3; ++c)
+          B[3 * r + c] = Ri[3 * r] * A[c] + Ri[3 * r + 1] * A[3 + c] + Ri[3 * r + 2] * A[6 + c];
+      }
+    }
+    validS_ = split_;
+    const S *PR = PR_[split_], *Pt = Pt_[split_], *SR = SR_[split_], *St = St_[split_];
+    if (split_ == n_) {
+      for (int i = 0; i < 9; ++i) R[i] = PR[i];
+      for (int i = 0; i < 3; ++i) t[i] = Pt[i];
+      return;
+    }
+    for (int r = 0; r < 3; ++r) {
+      t[r] = Pt[r] + PR[3 * r] * St[0] + PR[3 * r + 1] * St[1] + PR[3 * r + 2] * St[2];
+      for (int c = 0; c < 3; ++c) R[3 * r + c] = PR[3 * r] * SR[c] + PR[3 * r + 1] * SR[3 + c] + PR[3 * r + 2] * SR[6 + c];
+    }
+  }
+
+ private:
+  struct Joint {
+    S v[3], vv[6], pp[3], w[3], offset;
+    bool prismatic;
+  };
+  /// The factor of joint i at joint value q: x ↦ Ri x + d.
+  SOMA_ALWAYS_INLINE void factor(int i, const S& q, S (&Ri)[9], S (&d)[3], const S* cq, const S* sq) const {
+    const Joint& j = j_[i];
+    const S th = q + j.offset;
+    if (j.prismatic) {
+      for (int k = 0; k < 9; ++k) Ri[k] = k % 4 == 0 ? S(1) : S(0);
+      for (int k = 0; k < 3; ++k) d[k] = th * j.v[k];
+      return;
+    }
+    S s, c;
+    if (cq) {
+      c = cq[i];
+      s = sq[i];
+    } else {
+      sinCos(th, s, c);
+    }
+    const S c1 = S(1) - c;
+    Ri[0] = c + c1 * j.vv[0], Ri[1] = c1 * j.vv[3] - s * j.v[2], Ri[2] = c1 * j.vv[4] + s * j.v[1];
+    Ri[3] = c1 * j.vv[3] + s * j.v[2], Ri[4] = c + c1 * j.vv[1], Ri[5] = c1 * j.vv[5] - s * j.v[0];
+    Ri[6] = c1 * j.vv[4] - s * j.v[1], Ri[7] = c1 * j.vv[5] + s * j.v[0], Ri[8] = c + c1 * j.vv[2];
+    for (int k = 0; k < 3; ++k) d[k] = c1 * j.pp[k] - s * j.w[k];
+  }
+  int n_, split_;
+  Joint j_[6];
+  S PR_[7][9], Pt_[7][3], SR_[7][9], St_[7][3], qp_[6], qs_[6];
+  int validP_ = 0, validS_ = 0;
+};
+
+template <class S, class Vec>
+S residualOf(const Vec& q, const PoseMatrices<S>& pm, FkChain<S>& fk,
+             ResidualMode mode, const S* c = nullptr, const S* s = nullptr) {
   using std::sqrt;
-  Mat3<S> R;
-  Vec3<S> t;
-  fkMatrix(robot, q, pm.RM, pm.tM, R, t);
-  const S L = robot.lengthScale();
+  S R[9], t[3];
+  fk.eval(q, R, t, c, s);
+  S r2 = S(0), t2 = S(0);
+  if (mode != ResidualMode::Position)
+    for (int r = 0; r < 3; ++r)
+      for (int k = 0; k < 3; ++k) {
+        const S e = R[3 * r + k] - pm.RTM(r, k);
+        r2 += e * e;
+      }
+  if (mode != ResidualMode::Rotation)
+    for (int r = 0; r < 3; ++r) {  // t + R t_M − t*
+      const S e = t[r] + R[3 * r] * pm.tM(0) + R[3 * r + 1] * pm.tM(1) + R[3 * r + 2] * pm.tM(2) - pm.tT(r);
+      t2 += e * e;
+    }
+  // poseResidual (serial_robot.hpp): sqrt(max(|R − R*|², |t − t*|² / L²))
   switch (mode) {
-    case ResidualMode::Position: return sqrt((t - pm.tT).squaredNorm()) / L;
-    case ResidualMode::Rotation: return sqrt((R - pm.RT).squaredNorm());
+    case ResidualMode::Position: return sqrt(t2) * pm.invL;
+    case ResidualMode::Rotation: return sqrt(r2);
     case ResidualMode::Pose: break;
   }
-  // poseResidual (serial_robot.hpp): sqrt(max(|R − R*|², |t − t*|² / L²))
-  return sqrt(std::max<S>((R - pm.RT).squaredNorm(), (t - pm.tT).squaredNorm() / (L * L)));
+  return sqrt(std::max<S>(r2, t2 * pm.invL2));
 }
 
 /// Revolute joints wrapped to (−π, π] (SerialRobot::wrap without its copy; in-range values kept).
-template <class S> void wrapInPlace(const SerialRobot<S>& robot, JointVector<S>& q) {
+template <class S, class Vec> void wrapInPlace(const SerialRobot<S>& robot, Vec& q) {
   using std::atan2;
-  using std::cos;
-  using std::sin;
-  for (int i = 0; i < robot.dof() && i < q.size(); ++i)
-    if (robot.joints()[i].type == JointType::Revolute && !(q(i) > -pi<S>() && q(i) <= pi<S>()))
-      q(i) = atan2(sin(q(i)), cos(q(i)));
+  for (int i = 0; i < robot.dof() && i < int(q.size()); ++i)
+    if (robot.joints()[i].type == JointType::Revolute && !(q(i) > -pi<S>() && q(i) <= pi<S>())) {
+      S s, c;
+      sinCos(S(q(i)), s, c);
+      q(i) = atan2(s, c);
+    }
 }
 
 /// Newton steps on the posture (full pose: body Jacobian and the SE(3) log; position: the tool
 /// point's velocity columns; rotation: the angular rows), kept only while the residual falls.
+/// Closed forms are exact up to rounding: the caller runs it only when the residual is above 64 ulps.
 template <class S>
 void polish(const SerialRobot<S>& robot, JointVector<S>& q, const SE3<S>& target, const PoseMatrices<S>& pm,
-            ResidualMode mode, S& res) {
-  // Closed forms are exact up to rounding: Newton runs only when the residual is above 64 ulps.
-  res = residualOf(robot, q, pm, mode);
+            FkChain<S>& fk, ResidualMode mode, S& res) {
   for (int it = 0; it < 4 && res > Tolerance<S>::identity(); ++it) {
     const JacobianMatrix<S> Js = robot.spatialJacobian(q);
     const SE3<S> t = robot.fk(q);
@@ -396,45 +668,57 @@ void polish(const SerialRobot<S>& robot, JointVector<S>& q, const SE3<S>& target
     }
     if (!allFinite(dq)) return;
     const JointVector<S> qn = q + dq;
-    const S rn = residualOf(robot, qn, pm, mode);
+    const S rn = residualOf(qn, pm, fk, mode);
     if (!(rn < res)) return;
     q = qn;
     res = rn;
   }
 }
 
-template <class S> JointVector<S> toJoints(const SerialRobot<S>& robot, const JointVector<S>& raw) {
-  JointVector<S> q(raw.size());
-  for (int i = 0; i < raw.size(); ++i) q(i) = raw(i) - robot.joints()[i].offset;
-  wrapInPlace(robot, q);
-  return q;
-}
-
 template <class S>
-void finish(const SerialRobot<S>& robot, const SE3<S>& target, ResidualMode mode,
-            const std::vector<JointVector<S>>& raws, Solution<S>& sol, Clock::time_point t0,
-            const std::vector<char>& candidate = {}) {
+void finish(const SerialRobot<S>& robot, const SE3<S>& target, const PoseMatrices<S>& pm, ResidualMode mode,
+            const Raws<S>& raws, Solution<S>& sol, Clock::time_point t0, int split) {
   int outside = 0, missed = 0;
-  const PoseMatrices<S> pm(robot, target);
-  sol.postures.reserve(raws.size());
-  sol.residuals.reserve(raws.size());
-  for (std::size_t k = 0; k < raws.size(); ++k) {
-    JointVector<S> q = toJoints(robot, raws[k]);
-    S res;
-    polish(robot, q, target, pm, mode, res);
+  const int n = robot.dof();
+  FkChain<S> fk(robot, split);
+  sol.postures.reserve(std::size_t(raws.n));
+  sol.residuals.reserve(std::size_t(raws.n));
+  std::array<S, 6> offset{};
+  bool limited = false;  // some joint has a finite limit
+  for (int i = 0; i < n && i < 6; ++i) {
+    const auto& j = robot.joints()[i];
+    offset[i] = j.offset;
+    limited = limited || j.lower > -std::numeric_limits<S>::infinity() || j.upper < std::numeric_limits<S>::infinity();
+  }
+  for (int k = 0; k < raws.n; ++k) {
+    Joints6<S> q = raws.q[k];
+    for (int i = 0; i < n; ++i) q(i) -= offset[i];
+    wrapInPlace(robot, q);
+    // The residual's forward kinematics at q, with cos and sin of q_i + o_i taken from the pair each
+    // angle was computed from when the solver kept it (q_i + o_i = atan2(s_i, c_i) up to the rounding
+    // of the offset and the wrap by 2π: the pair is cos and sin of it to about 1 ulp, as sin and cos
+    // themselves are).
+    S res = raws.trig[k] ? residualOf(q, pm, fk, mode, raws.c[k].data(), raws.s[k].data())
+                         : residualOf(q, pm, fk, mode);
+    if (res > Tolerance<S>::identity()) {
+      JointVector<S> qd = q.head(n);
+      polish(robot, qd, target, pm, fk, mode, res);
+      q.head(n) = qd;
+      wrapInPlace(robot, q);
+    }
     // A candidate (the real part of a complex pair near the real axis, see solveCirclePair) that
     // Newton cannot bring onto the pose is not a posture.
-    if (k < candidate.size() && candidate[k] && !(res <= Tolerance<S>::sqrtEpsilon())) {
+    if (raws.cand[k] && !(res <= Tolerance<S>::sqrtEpsilon())) {
       ++missed;
       continue;
     }
-    wrapInPlace(robot, q);
-    const auto inside = shiftIntoLimits(robot, q);  // θ + 2πk where the limits lie off (−π, π]
-    if (!inside) {
+    // θ + 2πk where the limits lie off (−π, π]
+    if (limited && !shiftIntoLimitsInPlace(robot, q)) {
       ++outside;
       continue;
     }
-    sol.postures.push_back(*inside);
+    JointVector<S>& out = sol.postures.emplace_back(n);
+    for (int i = 0; i < n; ++i) out(i) = q(i);
     sol.residuals.push_back(res);
   }
   if (outside)
@@ -465,9 +749,10 @@ template <class S> bool concurrentPoint(const std::array<Vec3<S>, 3>& v, const s
     A += P;
     b += P * r[i];
   }
-  const Eigen::PartialPivLU<Mat3<S>> lu(A);
-  if (!(abs(lu.determinant()) > Tolerance<S>::input())) return false;  // parallel axes
-  c = lu.solve(b);
+  // A = Σ (I − v vᵀ) is 3×3 symmetric: its determinant and inverse by cofactors (Eigen's fixed-size path).
+  const S det = A.determinant();
+  if (!(abs(det) > Tolerance<S>::input())) return false;  // parallel axes
+  c = A.inverse() * b;
   for (int i = 0; i < 3; ++i) {
     const Vec3<S> d = (c - r[i]) - v[i] * v[i].dot(c - r[i]);
     if (d.squaredNorm() > tol * tol) return false;
@@ -475,11 +760,43 @@ template <class S> bool concurrentPoint(const std::array<Vec3<S>, 3>& v, const s
   return true;
 }
 
+
+/// A rigid motion as a rotation matrix and a translation: x ↦ R x + t.
+template <class S> struct RigidMatrix {
+  Mat3<S> R = Mat3<S>::Identity();
+  Vec3<S> t = Vec3<S>::Zero();
+  Vec3<S> act(const Vec3<S>& x) const { return R * x + t; }
+  RigidMatrix operator*(const RigidMatrix& o) const { return {R * o.R, R * o.t + t}; }
+  RigidMatrix inverse() const {
+    const Mat3<S> Rt = R.transpose();
+    return {Rt, -(Rt * t)};
+  }
+};
+/// e^{θ ξ} of a revolute joint (unit axis v through r) from cos θ and sin θ: Rodrigues and r − R r.
+// GF §5.2.1, GF-5.2.1-revolute-joint-exp
+template <class S> RigidMatrix<S> jointMatrix(const SerialJoint<S>& j, const Angle<S>& a) {
+  const Vec3<S>& v = j.axis;
+  const S c = a.c, s = a.s, c1 = S(1) - c;
+  RigidMatrix<S> m;
+  m.R << c + c1 * v.x() * v.x(), c1 * v.x() * v.y() - s * v.z(), c1 * v.x() * v.z() + s * v.y(),  //
+      c1 * v.y() * v.x() + s * v.z(), c + c1 * v.y() * v.y(), c1 * v.y() * v.z() - s * v.x(),      //
+      c1 * v.z() * v.x() - s * v.y(), c1 * v.z() * v.y() + s * v.x(), c + c1 * v.z() * v.z();
+  m.t = j.point - m.R * j.point;
+  return m;
+}
+
+/// A unit vector ⟂ v (v × i, or v × j when v is near i): the reference direction of an angle about v.
+template <class S> Vec3<S> normalTo(const Vec3<S>& v) {
+  Vec3<S> x = v.cross(Vec3<S>::UnitX());
+  if (x.squaredNorm() < S(1) / S(4)) x = v.cross(Vec3<S>::UnitY());
+  return x;
+}
+
 /// Planar 3R with parallel axes (joint indices j, j+1, j+2 of `robot`): E_j E_{j+1} E_{j+2} = X.
-/// Up to 2 solutions (raw angles). GF §10.3.2 (the planar arm after the T³ reduction: cosine
-/// rule for θ3, erratum E10.7; θ2 from X, Y, erratum E10.8)
-template <class S> std::vector<Vec3<S>> planar3R(const SerialRobot<S>& robot, int j, const SE3<S>& X,
-                                                 bool& doubleRoot, bool& degenerate) {
+/// Up to 2 solutions (raw angles) in `out`. GF §10.3.2 (the planar arm after the T³ reduction:
+/// cosine rule for θ3, erratum E10.7; θ2 from X, Y, erratum E10.8)
+template <class S> int planar3R(const SerialRobot<S>& robot, int j, const RigidMatrix<S>& X,
+                                std::array<std::array<Angle<S>, 3>, 2>& out, bool& doubleRoot, bool& degenerate) {
   const auto& J = robot.joints();
   const Vec3<S> u = J[j].axis;
   auto P = [&](const Vec3<S>& x) { return Vec3<S>(x - u * u.dot(x)); };
@@ -488,87 +805,79 @@ template <class S> std::vector<Vec3<S>> planar3R(const SerialRobot<S>& robot, in
   const Vec3<S> e = P(r2 - r1), f = P(r3 - r2);
   const S D2 = P(w - r1).squaredNorm();
   const Vec3<S> v2 = J[j + 1].axis;
-  const TrigRoots<S> t2 = solveLinearTrig<S>(S(2) * e.dot(f), S(2) * e.dot(v2.cross(f)),
-                                             D2 - e.squaredNorm() - f.squaredNorm());
+  TrigPair<S> t2 = linearTrig<S>(S(2) * e.dot(f), S(2) * e.dot(v2.cross(f)), D2 - e.squaredNorm() - f.squaredNorm());
   doubleRoot = t2.doubleRoot;
-  std::vector<S> th2 = t2.angles;
   if (t2.free) {
     degenerate = true;
-    th2 = {S(0)};
+    t2.n = 1;
+    t2.a[0] = Angle<S>{};
   }
-  std::vector<Vec3<S>> out;
   const S L2 = robot.lengthScale() * robot.lengthScale();
-  for (const S& a2 : th2) {
-    const Vec3<S> a = J[j + 1].motion(a2).act(r3);
+  const Vec3<S> v3 = J[j + 2].axis, x = normalTo(v3), RXx = X.R * x, g3 = v3.cross(x);
+  for (int i = 0; i < t2.n; ++i) {
+    const Angle<S>& a2 = t2.a[i];
+    const Vec3<S> a = r2 + rotateAbout<S>(v2, a2.c, a2.s, Vec3<S>(r3 - r2));  // E_{j+1}(θ2) r3
     bool deg = false;
-    const S a1 = angleAbout<S>(J[j].axis, Vec3<S>(a - r1), Vec3<S>(w - r1), &deg, L2);
+    const Angle<S> a1 = angleAbout<S>(J[j].axis, Vec3<S>(a - r1), Vec3<S>(w - r1), &deg, L2);
     if (deg) degenerate = true;
-    const Mat3<S> R3 = rodrigues<S>(v2, a2).transpose() * rodrigues<S>(J[j].axis, a1).transpose() * X.rotation();
-    const Vec3<S> v3 = J[j + 2].axis;
-    Vec3<S> x = v3.cross(Vec3<S>::UnitX());
-    if (x.squaredNorm() < S(1) / S(4)) x = v3.cross(Vec3<S>::UnitY());
-    const S a3 = angleAbout<S>(v3, x, Vec3<S>(R3 * x), nullptr, S(1));
-    out.emplace_back(a1, a2, a3);
+    // R3 x = R2ᵀ R1ᵀ RX x
+    const Vec3<S> R3x = rotateAbout<S>(v2, a2.c, S(-a2.s), rotateAbout<S>(J[j].axis, a1.c, S(-a1.s), RXx));
+    out[i] = {a1, a2, angleOf<S>(R3x.dot(g3), R3x.dot(x))};  // v3·(x × R3x) = R3x·(v3 × x)
   }
-  return out;
+  return t2.n;
 }
 
+/// wrist3R without allocation: up to 2 (θ1, θ2, θ3) in `out`, their count returned.
+// GF §5.1, GF-5.1-wrist-theta2, GF-5.1-wrist-theta1-theta3 (corrected sign, erratum E5.1)
+template <class S> int wristCore(const Vec3<S>& v1, const Vec3<S>& v2, const Vec3<S>& v3, const Mat3<S>& R,
+                                 std::array<std::array<Angle<S>, 3>, 2>& out, bool& gimbal, bool& doubleRoot) {
+  // v1ᵀ e^{θ2 v2} v3 = (v1·v2)(v2·v3) + cos θ2 [v1·v3 − (v1·v2)(v2·v3)] + sin θ2 v1·(v2×v3).
+  const S c12 = v1.dot(v2) * v2.dot(v3);
+  const Vec3<S> z = R * v3;
+  TrigPair<S> t2 = linearTrig<S>(v1.dot(v3) - c12, v1.dot(v2.cross(v3)), S(v1.dot(z)) - c12);
+  doubleRoot = t2.doubleRoot;
+  gimbal = false;
+  if (t2.free) {  // v1 = ±v3 and v2 ⟂ both or equal: degenerate wrist
+    t2.n = 1;
+    t2.a[0] = Angle<S>{};
+  }
+  // θ1 is the angle about v1 from y to z (projections y′, z′ ⟂ v1): v1·(y′ × z′) = y·(z′ × v1) and
+  // y′·z′ = y·z′, so z′ and z′ × v1 are formed once. θ3 is the angle about v3 from x (⟂ v3) to R3 x:
+  // v3·(x × R3x) = R3x·(v3 × x).
+  const Vec3<S> zp = z - v1 * v1.dot(z), g1 = zp.cross(v1);
+  const Vec3<S> x = normalTo(v3), Rx = R * x, g3 = v3.cross(x);
+  for (int i = 0; i < t2.n; ++i) {
+    const Angle<S>& a2 = t2.a[i];
+    const Vec3<S> y = rotateAbout<S>(v2, a2.c, a2.s, v3);  // the book's y = e^{θ2 ad v2} v3
+    const Vec3<S> yp = y - v1 * v1.dot(y);
+    const bool g = yp.squaredNorm() <= Tolerance<S>::identity(64);
+    // y'·z' = |y'|² cos θ1 and v1·(y'×z') = |y'|² sin θ1, i.e. −(y×v1)ᵀ R v3 (E5.1).
+    const Angle<S> a1 = g ? Angle<S>{} : angleOf<S>(y.dot(g1), y.dot(zp));
+    if (g) gimbal = true;
+    // R3 x = e^{−θ2 v2} e^{−θ1 v1} R x
+    const Vec3<S> R3x = rotateAbout<S>(v2, a2.c, S(-a2.s), rotateAbout<S>(v1, a1.c, S(-a1.s), Rx));
+    out[i] = {a1, a2, angleOf<S>(R3x.dot(g3), R3x.dot(x))};
+  }
+  return t2.n;
+}
 
 }  // namespace
 
 template <class S> TrigRoots<S> solveLinearTrig(const S& p, const S& q, const S& k) {
-  using std::abs;
-  using std::atan2;
-  using std::sqrt;
+  const TrigPair<S> r = linearTrig<S>(p, q, k);
   TrigRoots<S> out;
-  const S rho2 = p * p + q * q;
-  const S scale = std::max<S>(sqrt(rho2), abs(k));
-  if (rho2 <= Tolerance<S>::rank() * Tolerance<S>::rank() * scale * scale || scale == S(0)) {
-    out.free = abs(k) <= Tolerance<S>::rank() * (scale > S(0) ? scale : S(1)) || scale == S(0);
-    return out;  // p = q = 0: no solution unless k = 0 too
-  }
-  S disc = rho2 - k * k;
-  if (disc < S(0)) {
-    if (-disc > Tolerance<S>::rank() * rho2) return out;  // unreachable
-    disc = S(0);
-  }
-  if (disc <= Tolerance<S>::rank() * rho2) out.doubleRoot = true;
-  const S base = atan2(q, p), half = atan2(sqrt(disc), k);
-  out.angles = {base - half, base + half};
+  out.free = r.free;
+  out.doubleRoot = r.doubleRoot;
+  for (int i = 0; i < r.n; ++i) out.angles.push_back(r.a[i].th);
   return out;
 }
 
 template <class S>
 WristAngles<S> wrist3R(const Vec3<S>& v1, const Vec3<S>& v2, const Vec3<S>& v3, const Mat3<S>& R) {
   WristAngles<S> out;
-  // v1ᵀ e^{θ2 v2} v3 = (v1·v2)(v2·v3) + cos θ2 [v1·v3 − (v1·v2)(v2·v3)] + sin θ2 v1·(v2×v3).
-  const S c12 = v1.dot(v2) * v2.dot(v3);
-  const TrigRoots<S> t2 =
-      solveLinearTrig<S>(v1.dot(v3) - c12, v1.dot(v2.cross(v3)), S(v1.dot(R * v3)) - c12);
-  out.doubleRoot = t2.doubleRoot;
-  std::vector<S> th2 = t2.angles;
-  if (t2.free) th2 = {S(0)};  // v1 = ±v3 and v2 ⟂ both or equal: degenerate wrist
-  using std::cos;
-  using std::sin;
-  const Vec3<S> z = R * v3;
-  Vec3<S> x = v3.cross(Vec3<S>::UnitX());
-  if (x.squaredNorm() < S(1) / S(4)) x = v3.cross(Vec3<S>::UnitY());
-  const Vec3<S> Rx = R * x;
-  out.angles.reserve(th2.size());
-  for (const S& a2 : th2) {
-    const S c2 = cos(a2), s2 = sin(a2);
-    const Vec3<S> y = rotateAbout<S>(v2, c2, s2, v3);  // the book's y = e^{θ2 ad v2} v3
-    bool gimbal = false;
-    const Vec3<S> yp = y - v1 * v1.dot(y);
-    gimbal = yp.squaredNorm() <= Tolerance<S>::identity(64);
-    // y'·z' = |y'|² cos θ1 and v1·(y'×z') = |y'|² sin θ1, i.e. −(y×v1)ᵀ R v3 (E5.1).
-    const S a1 = gimbal ? S(0) : angleAbout<S>(v1, y, z, nullptr, S(1));
-    if (gimbal) out.gimbal = true;
-    // R3 x = e^{−θ2 v2} e^{−θ1 v1} R x
-    const Vec3<S> R3x = rotateAbout<S>(v2, c2, S(-s2), rotateAbout<S>(v1, cos(a1), S(-sin(a1)), Rx));
-    const S a3 = angleAbout<S>(v3, x, R3x, nullptr, S(1));
-    out.angles.emplace_back(a1, a2, a3);
-  }
+  std::array<std::array<Angle<S>, 3>, 2> a;
+  const int n = wristCore<S>(v1, v2, v3, R, a, out.gimbal, out.doubleRoot);
+  for (int i = 0; i < n; ++i) out.angles.emplace_back(a[i][0].th, a[i][1].th, a[i][2].th);
   return out;
 }
 
@@ -591,6 +900,17 @@ template <class S> PieperTriple<S> findPieperTriple(const SerialRobot<S>& robot)
       out.direction = v[0];
       return out;
     }
+    // Concurrent axes are pairwise within 2 tol·L of each other (each is within tol·L of the common
+    // point): two skew axes farther apart rule the triple out before the least-squares point.
+    bool skew = false;
+    for (int a = 0; a < 3 && !skew; ++a) {
+      const int b = (a + 1) % 3;
+      const Vec3<S> n = v[a].cross(v[b]);
+      const S nn = n.norm();
+      using std::abs;
+      skew = nn > tol && abs(S((r[b] - r[a]).dot(n))) > S(2) * tol * robot.lengthScale() * nn;
+    }
+    if (skew) continue;
     Vec3<S> c;
     if (concurrentPoint<S>(v, r, tol * robot.lengthScale(), c)) {
       out.first = first;
@@ -623,6 +943,7 @@ template <class S> IkMethod classifyRobot(const SerialRobot<S>& robot) {
                      " joints (3R wrists and arms, 6R robots)");
 }
 
+
 template <class S> Solution<S> solveWrist3R(const SerialRobot<S>& robot, const SE3<S>& target) {
   const auto t0 = Clock::now();
   requireRevolute(robot, 3, "wrist3r");
@@ -632,15 +953,17 @@ template <class S> Solution<S> solveWrist3R(const SerialRobot<S>& robot, const S
   sol.expected_count = 2;
   const auto& J = robot.joints();
   const Mat3<S> R = target.rotation() * robot.home().rotation().transpose();
-  const WristAngles<S> w = wrist3R<S>(J[0].axis, J[1].axis, J[2].axis, R);
-  if (w.gimbal) {
+  std::array<std::array<Angle<S>, 3>, 2> w;
+  bool gimbal = false, doubleRoot = false;
+  const int n = wristCore<S>(J[0].axis, J[1].axis, J[2].axis, R, w, gimbal, doubleRoot);
+  if (gimbal) {
     sol.continuum = true;
     sol.notes.push_back("gimbal singularity: θ1 and θ3 determined only in combination (θ1 = 0 returned)");
   }
-  if (w.doubleRoot) sol.notes.push_back("double root: the two postures merge (boundary of the reachable set)");
-  std::vector<JointVector<S>> raws;
-  for (const auto& a : w.angles) raws.push_back(JointVector<S>(a));
-  finish(robot, target, ResidualMode::Rotation, raws, sol, t0);
+  if (doubleRoot) sol.notes.push_back("double root: the two postures merge (boundary of the reachable set)");
+  Raws<S> raws;
+  for (int i = 0; i < n; ++i) raws.push(false, w[i]);
+  finish(robot, target, PoseMatrices<S>(robot, target), ResidualMode::Rotation, raws, sol, t0, 3);
   return sol;
 }
 
@@ -656,42 +979,37 @@ template <class S> Solution<S> solveArm3R(const SerialRobot<S>& robot, const SE3
   const Circle<S> ca = circleOf<S>(J[2].axis, J[2].point, p0, +1);
   const Circle<S> cb = circleOf<S>(J[0].axis, J[0].point, p, -1);
   const PairRoots<S> pr = solveCirclePair<S>(pointInvariants(ca, J[1].axis, J[1].point),
-                                             pointInvariants(cb, J[1].axis, J[1].point));
-  sol.notes = pr.notes;
+                                             pointInvariants(cb, J[1].axis, J[1].point), sol.notes);
   sol.continuum = pr.continuum;
   if (pr.doubleRoot) sol.notes.push_back("double root: two postures merge (on a bifurcation surface)");
-  std::vector<JointVector<S>> raws;
+  Raws<S> raws;
   const S L2 = robot.lengthScale() * robot.lengthScale();
-  std::vector<char> cand;
-  for (std::size_t k = 0; k < pr.angles.size(); ++k) {
-    const auto [a3, a1] = pr.angles[k];
-    cand.push_back(pr.nearReal[k]);
+  for (int k = 0; k < pr.n; ++k) {
+    const Angle<S>&a3 = pr.a[k], &a1 = pr.b[k];
     const Vec3<S> a = ca.at(a3), b = cb.at(a1);
     bool deg = false;
-    const S a2 = angleAbout<S>(J[1].axis, Vec3<S>(a - J[1].point), Vec3<S>(b - J[1].point), &deg, L2);
+    const Angle<S> a2 = angleAbout<S>(J[1].axis, Vec3<S>(a - J[1].point), Vec3<S>(b - J[1].point), &deg, L2);
     if (deg) {
       sol.continuum = true;
       sol.notes.push_back("the point lies on axis 2: θ2 is free (θ2 = 0 returned)");
     }
-    raws.push_back(Vec3<S>(a1, deg ? S(0) : a2, a3));
+    raws.push(pr.nearReal[k], std::array<Angle<S>, 3>{a1, deg ? Angle<S>{} : a2, a3});
   }
-  finish(robot, target, ResidualMode::Position, raws, sol, t0, cand);
+  finish(robot, target, PoseMatrices<S>(robot, target), ResidualMode::Position, raws, sol, t0, 3);
   return sol;
 }
 
 namespace {
 
-/// Pieper robot with the special triple at joints 4-6 (first = 3) or 2-4 (first = 1).
+/// Pieper robot with the special triple at joints 4-6 (first = 3) or 2-4 (first = 1); the raw
+/// postures are appended to `raws`.
 template <class S>
-std::vector<JointVector<S>> pieperCore(const SerialRobot<S>& robot, const PieperTriple<S>& tri,
-                                       const SE3<S>& target, Solution<S>& sol, std::vector<char>& cand) {
+void pieperCore(const SerialRobot<S>& robot, const PieperTriple<S>& tri, const PoseMatrices<S>& pm, Solution<S>& sol,
+                Raws<S>& raws) {
   const auto& J = robot.joints();
-  const SE3<S> A = target * robot.home().inverse();  // = E1 ··· E6
-  const Mat3<S> RA = A.rotation();
+  // A = target · home⁻¹ = E1 ··· E6, as matrices.
+  const RigidMatrix<S> A{pm.RTM, Vec3<S>(pm.tT - pm.RTM * pm.tM)};
   const S L2 = robot.lengthScale() * robot.lengthScale();
-  std::vector<JointVector<S>> raws;
-  raws.reserve(8);
-  cand.reserve(8);
   // Sides of the circle pair: (joint, sign, transformed-by-A⁻¹?) and the middle joint.
   int ja, jb, jm, sa, sb, sm;
   if (tri.first == 3) {
@@ -699,122 +1017,94 @@ std::vector<JointVector<S>> pieperCore(const SerialRobot<S>& robot, const Pieper
   } else {
     ja = 4, sa = -1, jb = 0, sb = +1, jm = 5, sm = -1;  // E6⁻¹ E5⁻¹ x = A⁻¹ E1 x
   }
-  // Line of joint jb as seen on the b side (through A⁻¹ when the triple is 2-4).
-  const SE3<S> Bmap = tri.first == 3 ? SE3<S>() : A.inverse();
-  const Vec3<S> vb = Bmap.so3().act(J[jb].axis), rb = Bmap.act(J[jb].point);
-  const SE3<S> Xobj = tri.first == 3 ? A : A.inverse();  // the b-side object is Xobj applied
+  // Line of joint jb as seen on the b side (through A⁻¹ when the triple is 2-4); the b-side object
+  // is Xobj applied.
+  const RigidMatrix<S> Ainv = A.inverse();
+  const RigidMatrix<S>& Xobj = tri.first == 3 ? A : Ainv;
+  const Vec3<S> vb = tri.first == 3 ? J[jb].axis : Vec3<S>(Ainv.R * J[jb].axis);
+  const Vec3<S> rb = tri.first == 3 ? J[jb].point : Ainv.act(J[jb].point);
   const Vec3<S> vm = J[jm].axis, rm = J[jm].point;
   PairRoots<S> pr;
   Circle<S> ca, cb;
   if (tri.concurrent) {
     ca = circleOf<S>(J[ja].axis, J[ja].point, tri.point, sa);
     cb = circleOf<S>(vb, rb, Xobj.act(tri.point), sb);
-    pr = solveCirclePair<S>(pointInvariants(ca, vm, rm), pointInvariants(cb, vm, rm));
+    pr = solveCirclePair<S>(pointInvariants(ca, vm, rm), pointInvariants(cb, vm, rm), sol.notes);
   } else {
     const Vec3<S> n0 = tri.direction;
-    const Vec3<S> nb = Xobj.so3().act(n0);
-    const S db = nb.dot(Xobj.translation());  // plane n0·y = 0 moved by Xobj
+    const Vec3<S> nb = Xobj.R * n0;
+    const S db = nb.dot(Xobj.t);  // plane n0·y = 0 moved by Xobj
     pr = solveCirclePair<S>(planeInvariants<S>(J[ja].axis, J[ja].point, n0, S(0), sa, vm, rm, &ca),
-                            planeInvariants<S>(vb, rb, nb, db, sb, vm, rm, &cb));
+                            planeInvariants<S>(vb, rb, nb, db, sb, vm, rm, &cb), sol.notes);
   }
-  for (const auto& n : pr.notes) sol.notes.push_back(n);
   if (pr.continuum) sol.continuum = true;
   if (pr.doubleRoot) sol.notes.push_back("double root in the positioning quartic (postures merge)");
-  for (std::size_t k = 0; k < pr.angles.size(); ++k) {
-    const auto [phA, phB] = pr.angles[k];
+  const int j0 = tri.first;
+  for (int k = 0; k < pr.n; ++k) {
+    const Angle<S>&phA = pr.a[k], &phB = pr.b[k];
     const Vec3<S> a = ca.at(phA), b = cb.at(phB);
     bool deg = false;
-    const S psi = tri.concurrent
-                      ? angleAbout<S>(vm, Vec3<S>(a - rm), Vec3<S>(b - rm), &deg, L2)
-                      : angleAbout<S>(vm, a, b, &deg, S(1));
+    const Angle<S> psi = tri.concurrent ? angleAbout<S>(vm, Vec3<S>(a - rm), Vec3<S>(b - rm), &deg, L2)
+                                        : angleAbout<S>(vm, a, b, &deg, S(1));
     if (deg) {
       sol.continuum = true;
-      sol.notes.push_back("wrist-type singularity: joint " + std::to_string(jm + 1) +
-                          " is free (0 returned)");
+      sol.notes.push_back("wrist-type singularity: joint " + std::to_string(jm + 1) + " is free (0 returned)");
     }
     // The circles already carry the sign of their joint (a = e^{σφ S} x with σφ = σθ), so θ = φ.
-    const S thA = phA, thB = phB, thM = deg ? S(0) : S(sm) * psi;
-    JointVector<S> th = JointVector<S>::Zero(6);
-    th(ja) = thA;
-    th(jb) = thB;
-    th(jm) = thM;
-    // The motion left for the triple.
-    SE3<S> X;
-    int j0;
-    if (tri.concurrent) {  // the wrist needs only the rotation: matrices, no quaternions
-      using std::cos;
-      using std::sin;
-      // first = 3: X = (E1 E2 E3)⁻¹ A; first = 1: X = E1⁻¹ A E6⁻¹ E5⁻¹ (rotation parts).
+    std::array<Angle<S>, 6> th;
+    th[ja] = phA;
+    th[jb] = phB;
+    th[jm] = deg ? Angle<S>{} : signedAngle(sm, psi);
+    std::array<std::array<Angle<S>, 3>, 2> tr;
+    int ntr;
+    if (tri.concurrent) {  // the wrist needs only the rotation
+      // first = 3: RX = (R1 R2 R3)ᵀ RA; first = 1: RX = R1ᵀ RA R6ᵀ R5ᵀ.
       Mat3<S> RX;
-      j0 = tri.first;
       for (int col = 0; col < 3; ++col) {
-        Vec3<S> w = RA.col(col);
-        if (tri.first == 3) {
-          for (int i = 0; i < 3; ++i) w = rotateAbout<S>(J[i].axis, cos(th(i)), S(-sin(th(i))), w);
-        } else {
-          w = rotateAbout<S>(J[0].axis, cos(th(0)), S(-sin(th(0))), w);
-        }
+        Vec3<S> w = A.R.col(col);
+        const int last = tri.first == 3 ? 3 : 1;
+        for (int i = 0; i < last; ++i) w = rotateAbout<S>(J[i].axis, th[i].c, S(-th[i].s), w);
         RX.col(col) = w;
       }
       if (tri.first == 1) {  // RX ← RX R6ᵀ R5ᵀ: rows rotated, i.e. (R5 R6 RXᵀ)ᵀ
         Mat3<S> T = RX.transpose();
         for (int col = 0; col < 3; ++col) {
           Vec3<S> w = T.col(col);
-          w = rotateAbout<S>(J[5].axis, cos(th(5)), sin(th(5)), w);
-          w = rotateAbout<S>(J[4].axis, cos(th(4)), sin(th(4)), w);
+          w = rotateAbout<S>(J[5].axis, th[5].c, th[5].s, w);
+          w = rotateAbout<S>(J[4].axis, th[4].c, th[4].s, w);
           T.col(col) = w;
         }
         RX = T.transpose();
       }
-      const WristAngles<S> w = wrist3R<S>(J[j0].axis, J[j0 + 1].axis, J[j0 + 2].axis, RX);
-      if (w.gimbal) {
+      bool gimbal = false, dbl = false;
+      ntr = wristCore<S>(J[j0].axis, J[j0 + 1].axis, J[j0 + 2].axis, RX, tr, gimbal, dbl);
+      if (gimbal) {
         sol.continuum = true;
         sol.notes.push_back("wrist gimbal singularity: joints " + std::to_string(j0 + 1) + " and " +
                             std::to_string(j0 + 3) + " determined only in combination");
       }
-      if (w.doubleRoot) sol.notes.push_back("wrist double root (postures merge)");
-      for (const auto& t : w.angles) {
-        JointVector<S> full = th;
-        full.segment(j0, 3) = t;
-        raws.push_back(std::move(full));
-        cand.push_back(pr.nearReal[k]);
-      }
-      continue;
-    }
-    if (tri.first == 3) {
-      X = (J[0].motion(th(0)) * J[1].motion(th(1)) * J[2].motion(th(2))).inverse() * A;
-      j0 = 3;
+      if (dbl) sol.notes.push_back("wrist double root (postures merge)");
     } else {
-      X = J[0].motion(th(0)).inverse() * A * J[5].motion(th(5)).inverse() * J[4].motion(th(4)).inverse();
-      j0 = 1;
-    }
-    std::vector<Vec3<S>> tr;
-    if (tri.concurrent) {
-      const WristAngles<S> w = wrist3R<S>(J[j0].axis, J[j0 + 1].axis, J[j0 + 2].axis, X.rotation());
-      if (w.gimbal) {
-        sol.continuum = true;
-        sol.notes.push_back("wrist gimbal singularity: joints " + std::to_string(j0 + 1) + " and " +
-                            std::to_string(j0 + 3) + " determined only in combination");
+      RigidMatrix<S> X;
+      if (tri.first == 3) {
+        X = (jointMatrix(J[0], th[0]) * jointMatrix(J[1], th[1]) * jointMatrix(J[2], th[2])).inverse() * A;
+      } else {
+        X = jointMatrix(J[0], th[0]).inverse() * A * jointMatrix(J[5], th[5]).inverse() *
+            jointMatrix(J[4], th[4]).inverse();
       }
-      if (w.doubleRoot) sol.notes.push_back("wrist double root (postures merge)");
-      tr = w.angles;
-    } else {
       bool dbl = false, dg = false;
-      tr = planar3R<S>(robot, j0, X, dbl, dg);
+      ntr = planar3R<S>(robot, j0, X, tr, dbl, dg);
       if (dbl) sol.notes.push_back("planar arm double root (elbow straight: postures merge)");
       if (dg) {
         sol.continuum = true;
         sol.notes.push_back("planar arm degenerate (a point on an axis)");
       }
     }
-    for (const auto& t : tr) {
-      JointVector<S> full = th;
-      full.segment(j0, 3) = t;
-      raws.push_back(full);
-      cand.push_back(pr.nearReal[k]);
+    for (int i = 0; i < ntr; ++i) {
+      for (int m = 0; m < 3; ++m) th[j0 + m] = tr[i][m];
+      raws.push(pr.nearReal[k], th);
     }
   }
-  return raws;
 }
 
 }  // namespace
@@ -828,12 +1118,18 @@ template <class S> Solution<S> solvePieper(const SerialRobot<S>& robot, const SE
   Solution<S> sol;
   sol.method = "pieper";
   sol.expected_count = 8;
-  sol.notes.push_back(std::string("axes ") + std::to_string(tri.first + 1) + "-" +
-                      std::to_string(tri.first + 3) + (tri.concurrent ? " meet in a point" : " are parallel"));
-  std::vector<JointVector<S>> raws;
-  std::vector<char> cand;
+  sol.notes.reserve(4);
+  {
+    std::string note = "axes 1-3";
+    note[5] = char('1' + tri.first);
+    note[7] = char('3' + tri.first);
+    note += tri.concurrent ? " meet in a point" : " are parallel";
+    sol.notes.push_back(std::move(note));
+  }
+  Raws<S> raws;
+  const PoseMatrices<S> pm(robot, target);
   if (tri.first == 3 || tri.first == 1) {
-    raws = pieperCore(robot, tri, target, sol, cand);
+    pieperCore(robot, tri, pm, sol, raws);
   } else {  // 1-3 or 3-5: solve the reversed robot (T⁻¹ with joints 6..1), where they are 4-6 / 2-4
     const SerialRobot<S> rev = robot.reversed();
     PieperTriple<S> rt = tri;
@@ -841,9 +1137,12 @@ template <class S> Solution<S> solvePieper(const SerialRobot<S>& robot, const SE
     // the reversed robot's coordinates are the tool-home frame: point p ↦ M⁻¹ p
     rt.point = robot.home().inverse().act(tri.point);
     rt.direction = robot.home().inverse().so3().act(tri.direction);
-    for (auto& r : pieperCore(rev, rt, SE3<S>(target.inverse()), sol, cand)) raws.push_back(r.reverse().eval());
+    pieperCore(rev, rt, PoseMatrices<S>(rev, SE3<S>(target.inverse())), sol, raws);
+    for (int k = 0; k < raws.n; ++k) raws.reverse(k);
   }
-  finish(robot, target, ResidualMode::Pose, raws, sol, t0, cand);
+  // The postures of one arm solution differ only in the triple's joints: the residuals' forward
+  // kinematics keeps the product of the joints before the triple and of those after it.
+  finish(robot, target, pm, ResidualMode::Pose, raws, sol, t0, tri.first + 3);
   return sol;
 }
 
@@ -875,3 +1174,4 @@ Solution<S> solveClosedForm(const SerialRobot<S>& robot, const SE3<S>& target, I
   template Solution<S> solveClosedForm<S>(const SerialRobot<S>&, const SE3<S>&, IkMethod);
 
 }  // namespace soma
+

@@ -51,6 +51,17 @@ template <class S> void roundTrip(const SerialRobot<S>& robot, const JointVector
   CHECK(sol.expected_count == maxCount);
   CHECK(containsPosture(sol, q, S(1000) * tol));
   for (const auto& r : sol.residuals) CHECK(r <= tol);
+  // Every posture reproduces T by the robot's own forward kinematics (SE(3) products of the joint
+  // motions), independently of the solver's residual, whose forward kinematics takes the cosines and
+  // sines each angle was computed from: a wrong step from those to the returned angle fails here.
+  using std::sqrt;
+  for (const auto& p : sol.postures) {
+    const SE3<S> Tp = robot.fk(p);
+    const S rot = sqrt((Tp.rotation() - T.rotation()).squaredNorm());
+    const S pos = sqrt((Tp.translation() - T.translation()).squaredNorm()) / robot.lengthScale();
+    const S r = sol.method == "wrist3r" ? rot : sol.method == "arm3r" ? pos : poseResidual(Tp, T, robot.lengthScale());
+    CHECK(r <= tol);
+  }
 }
 
 }  // namespace

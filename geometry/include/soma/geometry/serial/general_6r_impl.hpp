@@ -132,6 +132,56 @@ template <class S> S halfAngleFromPairs(const S& num, const S& den) {
   return S(2) * atan2(num, den);
 }
 
+/// LU factorisation with partial pivoting of a 12×12 matrix in row-major fixed arrays, factored
+/// once and solved several times (the inverse iteration of each real root): Eigen's PartialPivLU
+/// takes ~9k instructions to factor at this size, this ~2k; detail::smallSolveInPlace eliminates
+/// again for every right-hand side. `ok` is false when a pivot is exactly zero.
+template <class S> struct Lu12 {
+  S a[12][12];
+  int perm[12];
+  bool ok = true;
+  explicit Lu12(const M12<S>& m) {
+    using std::abs;
+    for (int i = 0; i < 12; ++i) {
+      perm[i] = i;
+      for (int j = 0; j < 12; ++j) a[i][j] = m(i, j);
+    }
+    for (int c = 0; c < 12; ++c) {
+      int p = c;
+      S best = abs(a[c][c]);
+      for (int r = c + 1; r < 12; ++r)
+        if (abs(a[r][c]) > best) best = abs(a[r][c]), p = r;
+      if (best == S(0)) {
+        ok = false;
+        return;
+      }
+      if (p != c) {
+        for (int j = 0; j < 12; ++j) std::swap(a[p][j], a[c][j]);
+        std::swap(perm[p], perm[c]);
+      }
+      for (int r = c + 1; r < 12; ++r) {
+        const S f = a[r][c] / a[c][c];
+        a[r][c] = f;
+        for (int j = c + 1; j < 12; ++j) a[r][j] -= f * a[c][j];
+      }
+    }
+  }
+  /// b ← M⁻¹ b (forward substitution with the unit lower factor, then back substitution).
+  void solve(Eigen::Matrix<S, 12, 1>& b) const {
+    S y[12];
+    for (int i = 0; i < 12; ++i) {
+      S v = b(perm[i]);
+      for (int k = 0; k < i; ++k) v -= a[i][k] * y[k];
+      y[i] = v;
+    }
+    for (int i = 11; i >= 0; --i) {
+      S v = y[i];
+      for (int k = i + 1; k < 12; ++k) v -= a[i][k] * b(k);
+      b(i) = v / a[i][i];
+    }
+  }
+};
+
 /// Working storage of the small eigenproblems: a fixed 24×24 array, the active size n ≤ 24.
 template <class S> using Work24 = Eigen::Matrix<S, 24, 24>;
 
@@ -320,8 +370,11 @@ template <class S> bool smallEigenvalues(Work24<S>& H, int n, std::vector<std::c
 /// Deflation of the extraneous eigenvalues x3 = ±i of the companion matrix K of
 /// M(x) = A x² + B x + C (K is 24×24 in the first block of `H`; on success the 16×16 block
 /// with the genuine eigenvalues is left in the first block of `H`). M(i) = (C − A) + iB has a
-/// 4-dimensional kernel (the factor (1 + x3²)⁴ of det M), found as the 8-dimensional real kernel
-/// of Z = [[C − A, −B], [B, C − A]] acting on (Re v, Im v) (full-pivot LU; its rank must be 16).
+/// 4-dimensional kernel (the factor (1 + x3²)⁴ of det M), found by Gaussian elimination with
+/// complete pivoting on the 12×12 complex matrix (in real arithmetic; its rank must be 8, pivots
+/// above √eps of the first): the kernel basis v_1..v_4 gives the 8-dimensional real kernel of
+/// Z = [[C − A, −B], [B, C − A]] acting on (Re w, Im w), w = v_j and i v_j (before: a full-pivot LU
+/// of that 24×24 real Z, 5× the work).
 /// The eigenvectors of K are (v, x v), so {(Re v, −Im v)} spans the real invariant subspace of
 /// ±i; with U the Householder reflectors of a QR of that 24×8 basis, UᵀKU is block upper
 /// triangular and its trailing 16×16 block carries the 16 genuine eigenvalues. `defect` =
@@ -330,23 +383,63 @@ template <class S> bool smallEigenvalues(Work24<S>& H, int n, std::vector<std::c
 // Manocha & Canny (1994) eigenproblem; GF §11.5 (16 postures)
 template <class S>
 bool deflateExtraneous(Work24<S>& H, const M12<S>& A, const M12<S>& B, const M12<S>& C, S& defect) {
-  const M12<S> Re = C - A;
-  MX<S> Z(24, 24);
-  Z.topLeftCorner(12, 12) = Re;
-  Z.topRightCorner(12, 12) = -B;
-  Z.bottomLeftCorner(12, 12) = B;
-  Z.bottomRightCorner(12, 12) = Re;
-  Eigen::FullPivLU<MX<S>> lu(Z);
-  lu.setThreshold(Tolerance<S>::sqrtEpsilon());
+  M12<S> zr = C - A, zi = B;  // M(i) = zr + i zi, eliminated in place
+  std::array<int, 12> col;    // col[c]: the original column now at position c
+  for (int c = 0; c < 12; ++c) col[c] = c;
   defect = S(1);
-  if (lu.rank() != 16) return false;
-  const MX<S> ker = lu.kernel();
-  Work24<S> W;  // columns 0..7: (Re v, −Im v)
-  for (int k = 0; k < 8; ++k)
-    for (int i = 0; i < 12; ++i) {
-      W(i, k) = ker(i, k);
-      W(12 + i, k) = -ker(12 + i, k);
+  const S thr2 = Tolerance<S>::epsilon();  // (√eps)²: pivots compared in squared modulus
+  S first2 = S(0);
+  int rank = 0;
+  for (int k = 0; k < 12; ++k) {
+    int p = k, q = k;
+    S best = S(-1);
+    for (int j = k; j < 12; ++j)
+      for (int i = k; i < 12; ++i) {
+        const S m2 = zr(i, j) * zr(i, j) + zi(i, j) * zi(i, j);
+        if (m2 > best) best = m2, p = i, q = j;
+      }
+    if (k == 0) first2 = best;
+    if (!(best > thr2 * first2) || !(best > S(0))) break;
+    zr.row(k).swap(zr.row(p));
+    zi.row(k).swap(zi.row(p));
+    zr.col(k).swap(zr.col(q));
+    zi.col(k).swap(zi.col(q));
+    std::swap(col[k], col[q]);
+    const S pr = zr(k, k), pim = zi(k, k), inv = S(1) / best;  // 1 / pivot = conj(pivot) / |pivot|²
+    for (int i = k + 1; i < 12; ++i) {
+      const S fr = (zr(i, k) * pr + zi(i, k) * pim) * inv, fi = (zi(i, k) * pr - zr(i, k) * pim) * inv;
+      for (int j = k + 1; j < 12; ++j) {
+        zr(i, j) -= fr * zr(k, j) - fi * zi(k, j);
+        zi(i, j) -= fr * zi(k, j) + fi * zr(k, j);
+      }
+      zr(i, k) = zi(i, k) = S(0);
     }
+    rank = k + 1;
+  }
+  if (rank != 8) return false;
+  Work24<S> W;  // columns 2j, 2j + 1: (Re w, −Im w) for w = v_j and i v_j
+  for (int j = 0; j < 4; ++j) {
+    // Kernel vector in the permuted order: y_{8+j} = 1, the others of 8..11 zero, y_0..7 from U11 y = −U12 e_j.
+    std::array<S, 12> yr{}, yi{};
+    yr[8 + j] = S(1);
+    for (int r = 7; r >= 0; --r) {
+      S sr = -zr(r, 8 + j), si = -zi(r, 8 + j);
+      for (int c = r + 1; c < 8; ++c) {
+        sr -= zr(r, c) * yr[c] - zi(r, c) * yi[c];
+        si -= zr(r, c) * yi[c] + zi(r, c) * yr[c];
+      }
+      const S d2 = zr(r, r) * zr(r, r) + zi(r, r) * zi(r, r);
+      yr[r] = (sr * zr(r, r) + si * zi(r, r)) / d2;
+      yi[r] = (si * zr(r, r) - sr * zi(r, r)) / d2;
+    }
+    for (int c = 0; c < 12; ++c) {
+      const int i = col[c];
+      W(i, 2 * j) = yr[c];
+      W(12 + i, 2 * j) = -yi[c];
+      W(i, 2 * j + 1) = -yi[c];
+      W(12 + i, 2 * j + 1) = -yr[c];
+    }
+  }
   const S kn = H.norm();
   Work24<S> K = H;
   std::array<S, 24> x, v;
@@ -466,7 +559,7 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
   for (int c = 0; c < 8; ++c) Q.col(c) = H[c + 1];
 
   // Left null space of Q (6×14): the last 6 columns of the Householder Q of Q.
-  Eigen::ColPivHouseholderQR<MX<S>> qr{MX<S>(Q)};
+  Eigen::ColPivHouseholderQR<M14x8<S>> qr(Q);
   const S r00 = abs(qr.matrixQR()(0, 0)), r77 = abs(qr.matrixQR()(7, 7));
   out.qRank = r00 > S(0) ? toDouble(r77 / r00) : 0.0;
   if (!(r77 > Tolerance<S>::rank() * r00)) {
@@ -475,7 +568,7 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
                         toString(toDouble(out.qRank), 3) +
                         "): special geometry, θ1 and θ2 are not determined by elimination");
   }
-  const MX<S> Hq = qr.householderQ();
+  const Eigen::Matrix<S, 14, 14> Hq = qr.householderQ();
   const Eigen::Matrix<S, 6, 14> N = Hq.rightCols(6).transpose();
   std::array<M6x9<S>, 3> Sig;
   for (int k = 0; k < 3; ++k) Sig[k] = N * P[k];
@@ -532,8 +625,27 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
   if (rc > Tolerance<S>::rank()) {
     Work24<S> H = Work24<S>::Zero();
     H.template topRightCorner<12, 12>().setIdentity();
-    H.template bottomLeftCorner<12, 12>() = -luA.solve(C);
-    H.template bottomRightCorner<12, 12>() = -luA.solve(B);
+    {  // −A⁻¹[C B], column by column with the fixed-size LU (Eigen's blocked solve with 24
+       // right-hand sides costs ~50k instructions here); Eigen's LU when a pivot is exactly zero
+      const Lu12<S> lu12(A);
+      if (lu12.ok) {
+        Eigen::Matrix<S, 12, 1> y;
+        for (int j = 0; j < 12; ++j) {
+          y = C.col(j);
+          lu12.solve(y);
+          H.col(j).template segment<12>(12) = -y;
+          y = B.col(j);
+          lu12.solve(y);
+          H.col(12 + j).template segment<12>(12) = -y;
+        }
+      } else {
+        Eigen::Matrix<S, 12, 24> CB;
+        CB << C, B;
+        const Eigen::Matrix<S, 12, 24> X = luA.solve(CB);
+        H.template bottomLeftCorner<12, 12>() = -X.template leftCols<12>();
+        H.template bottomRightCorner<12, 12>() = -X.template rightCols<12>();
+      }
+    }
     // The 8 extraneous eigenvalues x3 = ±i are deflated first (the QR iteration on 16×16 costs
     // about (16/24)³ ≈ 0.3 of the 24×24 one); when the deflation is not clean the full matrix is
     // used. Eigenvalues by a fixed-size Francis QR; Eigen's EigenSolver if that does not converge.
@@ -617,15 +729,15 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
   // Back-substitution for each real x3.
   for (const S& x : reals) {
     const M12<S> M = (A * x + B) * x + C;
-    const Eigen::PartialPivLU<M12<S>> lu(M);
+    const Lu12<S> lu(M);
     Eigen::Matrix<S, 12, 1> v = Eigen::Matrix<S, 12, 1>::Ones();
-    for (int it = 0; it < 2; ++it) {
-      v = lu.solve(v);
+    for (int it = 0; it < 2 && lu.ok; ++it) {
+      lu.solve(v);
       const S n2 = v.squaredNorm();
       if (!(n2 > S(0)) || !isFinite(n2)) break;
       v /= sqrt(n2);
     }
-    if (!allFinite(v)) {  // an exact zero pivot: the kernel from a full-pivot LU
+    if (!lu.ok || !allFinite(v)) {  // an exact zero pivot: the kernel from a full-pivot LU
       Eigen::FullPivLU<MX<S>> flu{MX<S>(M)};
       flu.setThreshold(Tolerance<S>::sqrtEpsilon());
       const auto ker = flu.kernel();
@@ -656,7 +768,7 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
     for (int i4 = 0; i4 < 3; ++i4)
       for (int i5 = 0; i5 < 3; ++i5) m45(i4 * 3 + i5) = t4[i4] * t5[i5];
     const V14<S> rhs = (P[0] + P[1] * c3 + P[2] * s3) * m45;
-    const VX<S> u = qr.solve(VX<S>(rhs));
+    const Eigen::Matrix<S, 8, 1> u = qr.solve(rhs);
     // u = (c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2)
     phi[0] = atan2(u(5), u(2));
     phi[1] = atan2(u(1), u(0));

@@ -15,23 +15,31 @@ namespace soma {
 /// (a prismatic value outside, or no θ + 2πk within an angular range narrower than 2π). Limits
 /// wider than 2π hold several such angles: the one nearest q's is returned (one posture per pose
 /// branch, as the solvers count them).
+template <class S, class Vec> bool shiftIntoLimitsInPlace(const SerialRobot<S>& robot, Vec& out);
+
 template <class S> std::optional<JointVector<S>> shiftIntoLimits(const SerialRobot<S>& robot, const JointVector<S>& q) {
-  using std::ceil;
-  using std::floor;
   JointVector<S> out = q;
+  if (!shiftIntoLimitsInPlace(robot, out)) return std::nullopt;
+  return out;
+}
+
+/// shiftIntoLimits applied to `out` itself (any Eigen vector; its first min(dof, size) entries), without
+/// a copy: false when some joint cannot be shifted into its limits (`out` is then partly shifted).
+template <class S, class Vec> bool shiftIntoLimitsInPlace(const SerialRobot<S>& robot, Vec& out) {
+  using std::ceil;
   const S twoPi = S(2) * pi<S>();
-  for (int i = 0; i < robot.dof() && i < q.size(); ++i) {
+  for (int i = 0; i < robot.dof() && i < int(out.size()); ++i) {
     const auto& j = robot.joints()[i];
     if (out(i) >= j.lower && out(i) <= j.upper) continue;
-    if (j.type != JointType::Revolute) return std::nullopt;
+    if (j.type != JointType::Revolute) return false;
     // The multiple of 2π that takes θ just above the lower limit, or just below the upper one.
     const S up = out(i) + twoPi * ceil((j.lower - out(i)) / twoPi);
     const S down = out(i) - twoPi * ceil((out(i) - j.upper) / twoPi);
     if (out(i) < j.lower && up <= j.upper) out(i) = up;
     else if (out(i) > j.upper && down >= j.lower) out(i) = down;
-    else return std::nullopt;
+    else return false;
   }
-  return out;
+  return true;
 }
 
 }  // namespace soma
