@@ -168,6 +168,9 @@ template <class S> void so3FromQuaternion(Context& c) {
     const S nerr = allFinite(naive) ? maxAbs(Mat3<S>(naive - r)) : std::numeric_limits<S>::infinity();
     c.recordIn("the unscaled 1/Δ formula at λ = √(denorm_min)", "fails (underflow: inaccurate or NaN)",
                io::numberText(nerr), nerr, tol, !(nerr <= tol));
+  } else {
+    c.note("mpfr has no subnormals and an exponent range of ±2³⁰: λ = √(denorm_min) and 4√(max) do not "
+           "exist there, so the three underflow/overflow checks run in the IEEE scalars only.");
   }
 }
 
