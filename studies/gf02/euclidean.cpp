@@ -85,17 +85,17 @@ template <class S> void actions(Context& c) {
   c.checkResidual("Ad on se(3): (A3) linear (a representation)", a3Ad, tol);
   c.checkResidual("left action l(g1, g) = g1 g: (A2)", a2Left, tol);
   c.checkResidual("right action r(g1, g) = g g1⁻¹: (A2)", a2Right, tol);
-  c.record("r(g1, g) = g g1 without the inverse: (A2), smallest violation over the sample",
-           "fails (the book: the inverse is needed for (A2))", toString(a2RightNoInv), toDouble(a2RightNoInv),
-           toDouble(tol), a2RightNoInv > S(1) / S(1000));
+  c.recordIn("r(g1, g) = g g1 without the inverse: (A2), smallest violation over the sample (> 1e-3)",
+             "fails (the book: the inverse is needed for (A2))", io::numberText(a2RightNoInv), a2RightNoInv,
+             S(1) / S(1000), a2RightNoInv > S(1) / S(1000));
 }
 
 SOMA_STUDY({.id = "GF-2.4-direct-product-and-actions",
             .title = "Direct products; action axioms (A1)–(A3) on points, lines, se(3), the group",
             .source = "GF §2.4",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { actions<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { actions<S>(c); }); }});
 
 // ---- GF-2.4-semidirect-product ----------------------------------------------------------------
 /// The book's semi-direct product G ⋉ H of a group G acting linearly on a commutative H.
@@ -198,8 +198,8 @@ SOMA_STUDY({.id = "GF-2.4-semidirect-product",
             .title = "Semi-direct product G ⋉ H: axioms, SO(3) ⋉ R³ = SE(3), U(1) ⋉ R² = SE(2)",
             .source = "GF §2.4",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { semidirect<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { semidirect<S>(c); }); }});
 
 // ---- GF-2.4-similarity-congruence -------------------------------------------------------------
 // GF §2.4, GF-2.4-similarity-congruence: S(g, M) = gMg⁻¹ and C(g, M) = gMgᵀ are
@@ -260,8 +260,9 @@ template <class S> void similarityCongruence(Context& c) {
   }
   c.checkResidual("O(3): g I gᵀ = I and gᵀ I g = I (either definition)", eStab, Tolerance<S>::identity(64));
   const MatX<S> gl = randGL();
-  c.record("a random GL(4) element does not stabilise I: |g gᵀ − I|", "> 0.1",
-           toString(maxAbs(MatX<S>(gl * gl.transpose() - I))), 0, 0, maxAbs(MatX<S>(gl * gl.transpose() - I)) > S(1) / S(10));
+  const S glMiss = maxAbs(MatX<S>(gl * gl.transpose() - I));
+  c.recordIn("a random GL(4) element does not stabilise I: |g gᵀ − I|", "> 0.1", io::numberText(glMiss), glMiss,
+             S(1) / S(10), glMiss > S(1) / S(10));
   // Ill-conditioned g: the similarity (A2) error grows with cond(g)².
   const S kappa = pow(Tolerance<S>::epsilon(), S(-1) / S(4));
   MatX<S> d = MatX<S>::Identity(n, n);
@@ -281,8 +282,8 @@ SOMA_STUDY({.id = "GF-2.4-similarity-congruence",
             .title = "Similarity gMg⁻¹ and congruence gMgᵀ as representations; dim M^S(n)",
             .source = "GF §2.4",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { similarityCongruence<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { similarityCongruence<S>(c); }); }});
 
 // ---- GF-2.5.1-euclidean-pairs -----------------------------------------------------------------
 // GF §2.5.1, GF-2.5.1-euclidean-pairs: v' = Mv + t preserves |u − v|²;
@@ -332,8 +333,8 @@ SOMA_STUDY({.id = "GF-2.5.1-euclidean-pairs",
             .title = "Isometries as pairs (M, t): distance, product formula, E(n) vs SE(n)",
             .source = "GF §2.5.1",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { euclideanPairs<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { euclideanPairs<S>(c); }); }});
 
 // ---- GF-2.5.1-homogeneous ---------------------------------------------------------------------
 // GF §2.5.1, GF-2.5.1-homogeneous: (R, t) ↦ [[R, t], [0, 1]] is a homomorphism; the inverse is
@@ -389,8 +390,8 @@ SOMA_STUDY({.id = "GF-2.5.1-homogeneous",
             .title = "Homogeneous 4×4 representation of SE(3): product, inverse, action, z = 1 plane",
             .source = "GF §2.5.1",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { homogeneous<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { homogeneous<S>(c); }); }});
 
 // ---- GF-2.5.2-screw-motion-matrix -------------------------------------------------------------
 /// The book's screw motion about an axis through the origin, pitch p per TURN.
@@ -441,8 +442,8 @@ SOMA_STUDY({.id = "GF-2.5.2-screw-motion-matrix",
             .title = "Screw motion matrix about an axis through u (pitch per turn)",
             .source = "GF §2.5.2",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { screwMotionMatrix<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { screwMotionMatrix<S>(c); }); }});
 
 // ---- GF-2.5.2-chasles-decomposition -----------------------------------------------------------
 /// The book's constructive proof as an algorithm: θ, v̂ from R (via the logarithm, §4.4),
@@ -540,8 +541,8 @@ SOMA_STUDY({.id = "GF-2.5.2-chasles-decomposition",
             .title = "Chasles: the book's screw construction vs the se(3) logarithm",
             .source = "GF §2.5.2",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { chasles<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { chasles<S>(c); }); }});
 
 // ---- GF-2.5.3-active-passive ------------------------------------------------------------------
 // GF §2.5.3, GF-2.5.3-active-passive: coordinates in a frame (R, t) are p' = Rᵀp − Rᵀt, i.e.
@@ -574,8 +575,8 @@ template <class S> void activePassive(Context& c) {
   c.checkResidual("x' = (p − t)·Ri etc.", eDot, tol);
   c.checkResidual("X = F X' F⁻¹ maps p1 to p2 (world coordinates)", eConj, tol);
   c.checkResidual("library changeOfFrame(F, X') = F X' F⁻¹", eLib, tol);
-  c.record("the opposite conjugation F⁻¹ X' F (the frequent sign bug): smallest miss", "fails",
-           toString(eWrongMin), toDouble(eWrongMin), toDouble(tol), eWrongMin > S(1) / S(1000));
+  c.recordIn("the opposite conjugation F⁻¹ X' F (the frequent sign bug): smallest miss (> 1e-3)", "fails",
+             io::numberText(eWrongMin), eWrongMin, S(1) / S(1000), eWrongMin > S(1) / S(1000));
   c.note("Erratum E2.5 (OCR) garbles X'(p1', 1)ᵀ = (p2', 1)ᵀ in the seed; the content is reproduced above.");
 }
 
@@ -583,8 +584,8 @@ SOMA_STUDY({.id = "GF-2.5.3-active-passive",
             .title = "Active vs passive: frame coordinates and change of frame X = F X' F⁻¹",
             .source = "GF §2.5.3",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { activePassive<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { activePassive<S>(c); }); }});
 
 }  // namespace
 }  // namespace soma::studies::SOMA_UNITY_ID

@@ -110,8 +110,8 @@ SOMA_STUDY({.id = "GF-2.2.1-orthogonal-group",
             .title = "O(n): MᵀM = I, closure, det ±1; O(2) rotations and reflections",
             .source = "GF §2.2.1",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { orthogonalGroup<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { orthogonalGroup<S>(c); }); }});
 
 // ---- GF-2.2.2-SO3-from-quaternion -------------------------------------------------------------
 // GF §2.2.2, GF-2.2.2-SO3-from-quaternion: (w:x:y:z) ↦ R/Δ is orthogonal with det 1, scale-free,
@@ -166,8 +166,11 @@ template <class S> void so3FromQuaternion(Context& c) {
                     maxAbs(Mat3<S>(rotationFromQuaternion(qh) - r)), tol);
     const Mat3<S> naive = piSU2<S>(qt.w(), qt.x(), qt.y(), qt.z()) / qt.coeffs().squaredNorm();
     const S nerr = allFinite(naive) ? maxAbs(Mat3<S>(naive - r)) : std::numeric_limits<S>::infinity();
-    c.record("the unscaled 1/Δ formula at λ = √(denorm_min)", "fails (underflow: inaccurate or NaN)",
-             toString(nerr), toDouble(nerr), toDouble(tol), !(nerr <= tol));
+    c.recordIn("the unscaled 1/Δ formula at λ = √(denorm_min)", "fails (underflow: inaccurate or NaN)",
+               io::numberText(nerr), nerr, tol, !(nerr <= tol));
+  } else {
+    c.note("mpfr has no subnormals and an exponent range of ±2³⁰: λ = √(denorm_min) and 4√(max) do not "
+           "exist there, so the three underflow/overflow checks run in the IEEE scalars only.");
   }
 }
 
@@ -175,8 +178,8 @@ SOMA_STUDY({.id = "GF-2.2.2-SO3-from-quaternion",
             .title = "The map PR³ → SO(3), (w:x:y:z) ↦ R/Δ",
             .source = "GF §2.2.2",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { so3FromQuaternion<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { so3FromQuaternion<S>(c); }); }});
 
 // ---- GF-2.2.2-SO3-to-quaternion-charts --------------------------------------------------------
 /// Chart k (1..4) as printed: the full diagonal-type entry beside halved off-diagonal entries (chart
@@ -249,12 +252,12 @@ template <class S> void so3Charts(Context& c) {
   for (int k = 0; k < 4; ++k) {
     c.checkResidual("corrected chart " + std::to_string(k + 1) + " (diagonal entry halved) ∝ (w:x:y:z)",
                     eFix[k], tol);
-    c.record("printed chart " + std::to_string(k + 1) + " (full diagonal entry): min 2×2-minor defect",
-             "fails (erratum E2.2)", toString(ePrintedMin[k]), toDouble(ePrintedMin[k]), toDouble(tol),
-             ePrintedMin[k] > S(1) / S(100));
+    c.recordIn("printed chart " + std::to_string(k + 1) + " (full diagonal entry): min 2×2-minor defect (> 0.01)",
+               "fails (erratum E2.2)", io::numberText(ePrintedMin[k]), ePrintedMin[k], S(1) / S(100),
+               ePrintedMin[k] > S(1) / S(100));
   }
-  c.record("chart 1 as OCR'd, ½(r21 − r21): min defect where |z| > 0.3", "fails (erratum E2.1)",
-           toString(eOcrMin), toDouble(eOcrMin), toDouble(tol), eOcrMin > S(1) / S(100));
+  c.recordIn("chart 1 as OCR'd, ½(r21 − r21): min defect where |z| > 0.3 (> 0.01)", "fails (erratum E2.1)",
+             io::numberText(eOcrMin), eOcrMin, S(1) / S(100), eOcrMin > S(1) / S(100));
   c.checkResidual("corrected charts agree on their overlaps", eOverlap, tol);
   c.checkResidual("library inverse (largest diagonal entry, Shepperd) round trip q → R → ±q", eRound, tol);
 
@@ -264,9 +267,9 @@ template <class S> void so3Charts(Context& c) {
   const Vec4<S> p1 = chartAsPrinted(r0, 1);
   const Quat<S> f1 = quaternionFromRotationChart(r0, 1);
   c.checkNear("corrected chart 1 at (0.8:0.2:−0.3:0.1): w/x = 4", S(4), f1.w() / f1.x(), Tolerance<S>::identity(64));
-  c.record("printed chart 1 at (0.8:0.2:−0.3:0.1): w/x (should be 4)", "fails (erratum E2.2: gives 8)",
-           toString(p1(0) / p1(1)), toDouble(abs(p1(0) / p1(1) - S(4))), toDouble(tol),
-           abs(p1(0) / p1(1) - S(8)) <= Tolerance<S>::identity(64));
+  c.recordIn("printed chart 1 at (0.8:0.2:−0.3:0.1): w/x (should be 4; error: distance from 8)",
+             "fails (erratum E2.2: gives 8)", io::numberText(S(p1(0) / p1(1))), abs(p1(0) / p1(1) - S(8)),
+             Tolerance<S>::identity(64), abs(p1(0) / p1(1) - S(8)) <= Tolerance<S>::identity(64));
 
   // Extremes: the half-turn (chart 1 undefined: 1 + tr R = 0), a near-half-turn and the identity.
   Vec3<S> ax = uniVec3<S>(g);
@@ -291,8 +294,8 @@ SOMA_STUDY({.id = "GF-2.2.2-SO3-to-quaternion-charts",
             .title = "Four charts SO(3) → PR³: printed charts fail (E2.1, E2.2), corrected invert",
             .source = "GF §2.2.2",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { so3Charts<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { so3Charts<S>(c); }); }});
 
 // ---- GF-2.2.3-symplectic ----------------------------------------------------------------------
 template <class S> MatX<S> symplecticJ(int n) {
@@ -381,8 +384,8 @@ SOMA_STUDY({.id = "GF-2.2.3-symplectic",
             .title = "Sp(2n, R): MᵀJM = J, det 1, closure, three constructions",
             .source = "GF §2.2.3",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { symplectic<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { symplectic<S>(c); }); }});
 
 // ---- GF-2.2.4-unitary -------------------------------------------------------------------------
 // GF §2.2.4, GF-2.2.4-unitary: M†M = I preserves z†w; |det M| = 1.
@@ -444,8 +447,8 @@ SOMA_STUDY({.id = "GF-2.2.4-unitary",
             .title = "U(n): M†M = I, invariance of z†w, |det M| = 1",
             .source = "GF §2.2.4",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { unitary<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { unitary<S>(c); }); }});
 
 // ---- GF-2.2.5-SU2-parametrisation -------------------------------------------------------------
 // GF §2.2.5, GF-2.2.5-SU2-parametrisation: [[a+ib, c+id], [−c+id, a−ib]] with
@@ -492,8 +495,8 @@ SOMA_STUDY({.id = "GF-2.2.5-SU2-parametrisation",
             .title = "SU(2) as [[a+ib, c+id], [−c+id, a−ib]], a²+b²+c²+d² = 1",
             .source = "GF §2.2.5",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { su2Parametrisation<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { su2Parametrisation<S>(c); }); }});
 
 // ---- GF-2.3-inclusions ------------------------------------------------------------------------
 // GF §2.3, GF-2.3-inclusions: x + yi ↦ x + yi + 0j + 0k; SO(n) → SO(n+1), M ↦ diag(M, 1);
@@ -541,8 +544,8 @@ SOMA_STUDY({.id = "GF-2.3-inclusions",
             .title = "Inclusions U(1) → S³, SO(n) → SO(n+1) are homomorphisms",
             .source = "GF §2.3",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { inclusions<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { inclusions<S>(c); }); }});
 
 // ---- GF-2.3-SU2-double-cover ------------------------------------------------------------------
 // GF §2.3, GF-2.3-SU2-double-cover: π: SU(2) → SO(3) is a homomorphism with π(−M) = π(M),
@@ -599,16 +602,16 @@ template <class S> void su2DoubleCover(Context& c) {
   const S right = maxAbs(Mat3<S>(piSU2<S>(sPi.w(), sPi.x(), sPi.y(), sPi.z()) - rotationFromQuaternion(neg)));
   c.checkResidual("s = library inverse: π∘s = id (s is a right inverse, a section)", right, tol);
   const S left = std::min(maxAbs(Vec4<S>(sPi.coeffs() - neg.coeffs())), S(2));
-  c.record("s∘π = id on −M as well (what “left inverse” would require)", "fails (erratum E2.3: right inverse)",
-           toString(left), toDouble(left), toDouble(tol), left > S(1) / S(2));
+  c.recordIn("s∘π = id on −M as well (what “left inverse” would require; miss > 0.5)",
+             "fails (erratum E2.3: right inverse)", io::numberText(left), left, S(1) / S(2), left > S(1) / S(2));
 }
 
 SOMA_STUDY({.id = "GF-2.3-SU2-double-cover",
             .title = "π: SU(2) → SO(3) is a double cover with kernel ±I and no section",
             .source = "GF §2.3",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { su2DoubleCover<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { su2DoubleCover<S>(c); }); }});
 
 // ---- GF-2.3-accidental-isomorphisms -----------------------------------------------------------
 // GF §2.3, GF-2.3-accidental-isomorphisms: U(1) ≅ SO(2), unit quaternions ≅ SU(2),
@@ -650,8 +653,8 @@ SOMA_STUDY({.id = "GF-2.3-accidental-isomorphisms",
             .title = "U(1) ≅ SO(2), unit quaternions ≅ SU(2), Sp(2, R) ≅ SL(2)",
             .source = "GF §2.3",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { accidentalIsomorphisms<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { accidentalIsomorphisms<S>(c); }); }});
 
 }  // namespace
 }  // namespace soma::studies::SOMA_UNITY_ID

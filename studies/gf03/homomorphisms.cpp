@@ -45,8 +45,8 @@ template <class S> void imageKernel(Context& c) {
     eTr = std::max(eTr, abs(p.trace() - (S(4) * q.w() * q.w() - S(1))));
   }
   c.checkResidual("tr π(M) = 4a² − 1, so π(M) = I3 ⇔ a² = 1 ⇔ M = ±I (kernel {±I})", eTr, tol);
-  c.record("π(M) ≠ I3 away from ±I (|a| < 0.99): min |π(M) − I|", "> 0.01", toString(minOff), 0, 0,
-           minOff > S(1) / S(100));
+  c.recordIn("π(M) ≠ I3 away from ±I (|a| < 0.99): min |π(M) − I|", "> 0.01", io::numberText(minOff), minOff,
+             S(1) / S(100), minOff > S(1) / S(100));
   // Near ±I the kernel test needs a tolerance: M = exp of an angle δ maps δ-close to I.
   const S delta = Tolerance<S>::sqrtEpsilon();
   const Quat<S> qn = SO3<S>::fromAxisAngle(Vec3<S>(S(0), S(0), S(1)), delta).quaternion();
@@ -82,8 +82,8 @@ SOMA_STUDY({.id = "GF-3.1-image-kernel",
             .title = "Image and kernel of homomorphisms: ker π = {±I}, ker det = SU(n)",
             .source = "GF §3.1",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { imageKernel<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { imageKernel<S>(c); }); }});
 
 // ---- GF-3.1-conjugation -----------------------------------------------------------------------
 // GF §3.1, GF-3.1-conjugation: h_g(x) = gxg⁻¹ is an automorphism with inverse h_{g⁻¹}; its fixed
@@ -115,11 +115,11 @@ template <class S> void conjugation(Context& c) {
   c.checkResidual("h_{g⁻¹}∘h_g = id", eInv, tol);
   c.checkResidual("h_g(e) = e (kernel trivial)", eKer, tol);
   c.checkResidual("x = exp(λ log g) commutes with g and is fixed by h_g", eFix, tol);
-  c.record("a random x is not fixed (does not commute with g): min |h_g(x) − x|", "> 1e-3",
-           toString(minNonFix), 0, 0, minNonFix > S(1) / S(1000));
+  c.recordIn("a random x is not fixed (does not commute with g): min |h_g(x) − x|", "> 1e-3",
+             io::numberText(minNonFix), minNonFix, S(1) / S(1000), minNonFix > S(1) / S(1000));
   c.checkResidual("pre-image of y under h_g: x = g⁻¹yg satisfies h_g(x) = y (corrected)", ePre, tol);
-  c.record("printed “y = g⁻¹xg”, i.e. x = gyg⁻¹: min |h_g(x) − y|", "fails (erratum E3.1)",
-           toString(ePrintedMin), toDouble(ePrintedMin), toDouble(tol), ePrintedMin > S(1) / S(1000));
+  c.recordIn("printed “y = g⁻¹xg”, i.e. x = gyg⁻¹: min |h_g(x) − y| (> 1e-3)", "fails (erratum E3.1)",
+             io::numberText(ePrintedMin), ePrintedMin, S(1) / S(1000), ePrintedMin > S(1) / S(1000));
   c.checkResidual("conjugation by |t| = 1e6 and back: relative error", eFar, tol);
 }
 
@@ -127,8 +127,8 @@ SOMA_STUDY({.id = "GF-3.1-conjugation",
             .title = "Conjugation h_g(x) = gxg⁻¹ is an automorphism; its pre-image (E3.1)",
             .source = "GF §3.1",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { conjugation<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { conjugation<S>(c); }); }});
 
 // ---- GF-3.1-metric-groups ---------------------------------------------------------------------
 // GF §3.1, GF-3.1-metric-groups: MᵀQM = Q; positive definite Q = PᵀP makes PMP⁻¹ orthogonal;
@@ -244,8 +244,8 @@ SOMA_STUDY({.id = "GF-3.1-metric-groups",
             .title = "Groups preserving a form: O(n) by conjugation, O(p,q), Lorentz, Sp",
             .source = "GF §3.1",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { metricGroups<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { metricGroups<S>(c); }); }});
 
 // ---- GF-3.2-cosets-hopf -----------------------------------------------------------------------
 /// Projective distance of two points of PC¹: |w1 z2 − w2 z1| after normalising both.
@@ -290,8 +290,8 @@ template <class S> void cosetsHopf(Context& c) {
   }
   c.checkResidual("[diag(e^{iθ}, e^{−iθ}) M] = [M]: (w : z) unchanged", eInv, tol);
   c.checkResidual("the Hopf image on S² is constant on cosets", eHopf, tol);
-  c.record("left-multiplying by an element outside U(1) moves the point: min defect", "> 1e-3",
-           toString(minDistinct), 0, 0, minDistinct > S(1) / S(1000));
+  c.recordIn("left-multiplying by an element outside U(1) moves the point: min defect", "> 1e-3",
+             io::numberText(minDistinct), minDistinct, S(1) / S(1000), minDistinct > S(1) / S(1000));
   c.checkResidual("every (w : z) lifts to [[w, z], [−z̄, w̄]] ∈ SU(2) (surjective)", eSurj, tol);
   // Extremes: w = 0 and z = 0, the points (0 : 1) and (1 : 0), without dividing by them.
   const CMat<S> m0 = su2<S>(S(0), S(0), S(1), S(0)), m1 = su2<S>(S(1), S(0), S(0), S(0));
@@ -305,8 +305,8 @@ SOMA_STUDY({.id = "GF-3.2-cosets-hopf",
             .title = "Cosets: SU(2)/U(1) = PC¹ ≅ S² (the Hopf map)",
             .source = "GF §3.2",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { cosetsHopf<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { cosetsHopf<S>(c); }); }});
 
 // ---- GF-3.2-normal-subgroup-quotient ----------------------------------------------------------
 // GF §3.2, GF-3.2-normal-subgroup-quotient: SU(n) is normal in U(n) (det(PMP⁻¹) = det M) and
@@ -349,8 +349,8 @@ SOMA_STUDY({.id = "GF-3.2-normal-subgroup-quotient",
             .title = "Normal subgroup SU(n) ◁ U(n) and the quotient U(n)/SU(n) = U(1)",
             .source = "GF §3.2",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { normalQuotient<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { normalQuotient<S>(c); }); }});
 
 // ---- GF-3.3-isotropy-orbit --------------------------------------------------------------------
 // GF §3.3, GF-3.3-isotropy-orbit: the isotropy group of a point under SE(3) is the SO(3) of
@@ -397,15 +397,16 @@ template <class S> void isotropyOrbit(Context& c) {
   const S r1 = sqrt((gg * g1).translation().squaredNorm()), r2 = sqrt((gg * g1p).translation().squaredNorm());
   c.checkNear("g1 and h·g1 lie in the same Hg class (|t| equal)", sqrt(g1.translation().squaredNorm()),
               sqrt(g1p.translation().squaredNorm()), tol);
-  c.record("with Hg cosets, [g g1] = [g h g1]: |t| of g g1 vs g h g1", "fails (suspected erratum E3.6: needs cosets gH)",
-           toString(r1) + " vs " + toString(r2), toDouble(abs(r1 - r2)), toDouble(tol), abs(r1 - r2) > S(1) / S(10));
+  c.recordIn("with Hg cosets, [g g1] = [g h g1]: |t| of g g1 vs g h g1 (differ by > 0.1)",
+             "fails (suspected erratum E3.6: needs cosets gH)", io::numberText(r1) + " vs " + io::numberText(r2),
+             abs(r1 - r2), S(1) / S(10), abs(r1 - r2) > S(1) / S(10));
   // Isotropy at [g1] (cosets gH) is g1 H g1⁻¹ (rotations about g1(0)), equal to H only at [e].
   const SE3<S> rotOrigin(SO3<S>::fromAxisAngle(Vec3<S>(S(0), S(0), S(1)), S(1)), Vec3<S>::Zero());
   const Vec3<S> pt = g1.translation();
-  c.record("an element of H fixes [g1] = g1(0) ≠ 0 (book: “isotropy at any point is H”)",
-           "fails (isotropy of [g1] is g1Hg1⁻¹)", toString(maxAbs(Vec3<S>(rotOrigin.act(pt) - pt))),
-           toDouble(maxAbs(Vec3<S>(rotOrigin.act(pt) - pt))), toDouble(tol),
-           maxAbs(Vec3<S>(rotOrigin.act(pt) - pt)) > S(1) / S(10));
+  const S isoMove = maxAbs(Vec3<S>(rotOrigin.act(pt) - pt));
+  c.recordIn("an element of H fixes [g1] = g1(0) ≠ 0 (book: “isotropy at any point is H”; moves it > 0.1)",
+             "fails (isotropy of [g1] is g1Hg1⁻¹)", io::numberText(isoMove), isoMove, S(1) / S(10),
+             isoMove > S(1) / S(10));
   c.checkResidual("g1 h g1⁻¹ fixes [g1]: isotropy at [g1] is the conjugate g1Hg1⁻¹",
                   maxAbs(Vec3<S>((g1 * rotOrigin * g1.inverse()).act(pt) - pt)), tol);
 }
@@ -414,8 +415,8 @@ SOMA_STUDY({.id = "GF-3.3-isotropy-orbit",
             .title = "Isotropy groups and orbits; the action of G on G/H",
             .source = "GF §3.3",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { isotropyOrbit<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { isotropyOrbit<S>(c); }); }});
 
 // ---- GF-3.3-projective-group ------------------------------------------------------------------
 // GF §3.3, GF-3.3-projective-group: GL(n+1) acts on PRⁿ; the scalars D(λ) act trivially and are
@@ -484,8 +485,8 @@ SOMA_STUDY({.id = "GF-3.3-projective-group",
             .title = "Projective groups PGL(n) = GL(n+1)/GL(1) acting on PRⁿ",
             .source = "GF §3.3",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { projectiveGroup<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { projectiveGroup<S>(c); }); }});
 
 }  // namespace
 }  // namespace soma::studies::SOMA_UNITY_ID

@@ -80,8 +80,8 @@ SOMA_STUDY({.id = "GF-3.7-joint-matrices",
             .title = "Joint matrices X_p(θ), X_t(θ) as one-parameter subgroups",
             .source = "GF §3.7",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { jointMatrices<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { jointMatrices<S>(c); }); }});
 
 // ---- GF-3.7-offset-revolute-example -----------------------------------------------------------
 /// The matrix as the book prints it (erratum E3.3: the (2,4) entry should be −sin θ).
@@ -117,8 +117,8 @@ template <class S> void offsetRevolute(Context& c) {
     const Vec4<S> moved = offsetRevolutePrinted(th) * xh;
     const S miss = maxAbs(Vec4<S>(moved - xh));
     if (abs(sin(th)) > S(1) / S(10)) {
-      c.record(label + ": printed matrix moves (0, 1, 0) to (0, 1, 2 sin θ)", "fails (erratum E3.3)",
-               toString(moved(2)), toDouble(miss), toDouble(tol), miss > S(1) / S(10));
+      c.recordIn(label + ": printed matrix moves (0, 1, 0) to (0, 1, 2 sin θ) (miss > 0.1)", "fails (erratum E3.3)",
+                 io::numberText(S(moved(2))), miss, S(1) / S(10), miss > S(1) / S(10));
       c.checkNear(label + ": the printed image's z equals 2 sin θ", S(2) * sin(th), moved(2), tol);
     } else {
       c.checkResidual(label + ": printed and corrected agree where sin θ = 0", miss, tol);
@@ -130,8 +130,8 @@ SOMA_STUDY({.id = "GF-3.7-offset-revolute-example",
             .title = "Revolute about the x-parallel line through (0,1,0): erratum E3.3",
             .source = "GF §3.7",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { offsetRevolute<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { offsetRevolute<S>(c); }); }});
 
 // ---- forward kinematics scaffolding -----------------------------------------------------------
 /// A standard DH row A = Rz(θ)·Tz(d)·Tx(a)·Rx(α); the joint variable adds to θ (R) or d (P).
@@ -243,8 +243,8 @@ SOMA_STUDY({.id = "GF-3.7-forward-kinematics",
             .title = "Forward kinematics K(θ) = A1(θ1)⋯A6(θ6) vs the DH product",
             .source = "GF §3.7",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { forwardKinematics<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { forwardKinematics<S>(c); }); }});
 
 // ---- GF-3.7-tool-frame-and-relative-moves -----------------------------------------------------
 // GF §3.7, GF-3.7-tool-frame-and-relative-moves: (K(θ)B)⁻¹ = B⁻¹A_6(−θ6)⋯A_1(−θ1); a passive
@@ -328,8 +328,8 @@ SOMA_STUDY({.id = "GF-3.7-tool-frame-and-relative-moves",
             .title = "Tool-frame kinematics, passive targets and moves in the tool frame",
             .source = "GF §3.7",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { toolFrame<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { toolFrame<S>(c); }); }});
 
 }  // namespace
 }  // namespace soma::studies::SOMA_UNITY_ID

@@ -80,8 +80,8 @@ SOMA_STUDY({.id = "GF-3.5-translations-normal",
             .title = "The translations R³ form a normal subgroup of SE(3); SE(3)/R³ = SO(3)",
             .source = "GF §3.5",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { translationsNormal<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { translationsNormal<S>(c); }); }});
 
 // ---- GF-3.5-subgroups-of-R3-and-SO3 -----------------------------------------------------------
 // GF §3.5, GF-3.5-subgroups-of-R3-and-SO3: the closed subgroups of R³ are Z^k × R^m (k + m ≤ 3,
@@ -166,8 +166,8 @@ SOMA_STUDY({.id = "GF-3.5-subgroups-of-R3-and-SO3",
             .title = "Subgroups of R³ and connected subgroups of SO(3); O(2)",
             .source = "GF §3.5",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { subgroupsR3SO3<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { subgroupsR3SO3<S>(c); }); }});
 
 // ---- GF-3.5-table-3.1-connected-subgroups -----------------------------------------------------
 // GF §3.5, GF-3.5-table-3.1-connected-subgroups: the Lie algebras of the subgroups in Table 3.1
@@ -210,8 +210,8 @@ template <class S> void table31(Context& c) {
       {"SO(2) × R with R not along the axis", 2, {tw<S>(e3<S>(2), z0), tw<S>(z0, e3<S>(0))}}};
   for (const auto& r : bad) {
     const S d = closureDefect<S>(r.basis);
-    c.record(r.name + ": closure defect", "fails (not a subalgebra)", toString(d), toDouble(d), toDouble(tol),
-             d > S(1) / S(10));
+    c.recordIn(r.name + ": closure defect (> 0.1)", "fails (not a subalgebra)", io::numberText(d), d, S(1) / S(10),
+               d > S(1) / S(10));
   }
   // dim 5: none. A 5-dimensional subspace is the kernel of a functional φ; search 3000 random φ
   // plus the coordinate functionals for a closed one (evidence, not a proof).
@@ -229,8 +229,8 @@ template <class S> void table31(Context& c) {
     for (int i = 1; i < 6; ++i) basis.push_back(Vec6<S>(q.col(i)));
     minDefect = std::min(minDefect, closureDefect<S>(basis));
   }
-  c.record("dim 5: smallest closure defect over 3006 hyperplanes of se(3)", "> 0.01 (no 5-dim subgroup)",
-           toString(minDefect), 0, 0, minDefect > S(1) / S(100));
+  c.recordIn("dim 5: smallest closure defect over 3006 hyperplanes of se(3)", "> 0.01 (no 5-dim subgroup)",
+             io::numberText(minDefect), minDefect, S(1) / S(100), minDefect > S(1) / S(100));
   // H_p for different p are not conjugate: the pitch ω·v/ω·ω is invariant under Ad.
   S ePitch(0);
   for (int t = 0; t < 50; ++t) {
@@ -249,8 +249,8 @@ SOMA_STUDY({.id = "GF-3.5-table-3.1-connected-subgroups",
             .title = "Table 3.1: the connected subgroups of SE(3) via closed subalgebras",
             .source = "GF §3.5",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { table31<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { table31<S>(c); }); }});
 
 // ---- GF-3.5-subgroup-intersection -------------------------------------------------------------
 // GF §3.5, GF-3.5-subgroup-intersection: rotations about p ∩ rotations about q = rotations about
@@ -307,8 +307,8 @@ SOMA_STUDY({.id = "GF-3.5-subgroup-intersection",
             .title = "Intersection of the rotation groups about two points",
             .source = "GF §3.5",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { subgroupIntersection<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { subgroupIntersection<S>(c); }); }});
 
 // ---- GF-3.6-reuleaux-lower-pairs --------------------------------------------------------------
 template <class S> struct LowerPair {
@@ -404,8 +404,8 @@ template <class S> void reuleaux(Context& c) {
     }
     c.checkResidual(lp.name + ": sample points satisfy F = 0", onSurface, tol);
     c.checkResidual(lp.name + ": F(g·x) = 0 for 50 random g in its subgroup", inv, tol);
-    c.record(lp.name + ": a generic rigid motion moves it off itself (min over 5 of max |F|)", "> 0.01",
-             toString(moved), 0, 0, moved > S(1) / S(100));
+    c.recordIn(lp.name + ": a generic rigid motion moves it off itself (min over 5 of max |F|)", "> 0.01",
+               io::numberText(moved), moved, S(1) / S(100), moved > S(1) / S(100));
   }
   // Orbit dimensions at a generic point: rank of the velocities ω × x + v over a basis.
   const Vec3<S> x(S(7) / S(10), S(-4) / S(10), S(11) / S(10));
@@ -441,8 +441,8 @@ SOMA_STUDY({.id = "GF-3.6-reuleaux-lower-pairs",
             .title = "Reuleaux's six lower pairs as surfaces invariant under subgroups of SE(3)",
             .source = "GF §3.6",
             .chapter = kChapter,
-            .scalarGeneric = false,
-            .run = [](Context& c) { reuleaux<double>(c); }});
+            .scalarGeneric = true,
+            .run = [](Context& c) { withScalar(c.scalar(), [&]<class S>() { reuleaux<S>(c); }); }});
 
 }  // namespace
 }  // namespace soma::studies::SOMA_UNITY_ID
