@@ -62,12 +62,13 @@ foreach(scalar IN LISTS SOMA_SCALARS)
   endif()
 endforeach()
 
-# Concepts (their NAMEs) instantiated for double only in this build: empty (the whole ladder) except
-# in the `fuzz` preset, whose sanitized build (tests/fuzz/README.md, the cost measured in
-# scripts/test.sh) links the readers, which call the general-6R, closed-form IK and dynamics-solver
-# instantiations in no scalar but double (the scene reader's rigid bodies build SpatialInertia<S>
-# in every scalar, so `spatial_inertia` is a concept of its own, not on the fuzz preset's list). A target that needs one of them in another scalar then
-# fails to link, naming the symbol.
+# Concepts (their NAMEs) instantiated for double only in this build: empty (the whole ladder). A
+# build that needs only the readers may list the concepts they call in no scalar but double (the
+# general-6R, closed-form IK and dynamics solvers; the scene reader's rigid bodies build
+# SpatialInertia<S> in every scalar, so `spatial_inertia` is a concept of its own) to save their
+# ladder; the `fuzz` preset did until its sanitized tests grew to the serial and CLI tests, which
+# call them in every scalar. A target that needs one of them in another scalar then fails to link,
+# naming the symbol.
 set(SOMA_INSTANTIATE_DOUBLE_ONLY "" CACHE STRING
     "Concepts (soma_instantiate NAMEs) instantiated for double only (the fuzz preset)")
 

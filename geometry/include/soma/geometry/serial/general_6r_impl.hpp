@@ -680,11 +680,18 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
     L0.bottomRightCorner(12, 12) = -B;
     L1.topLeftCorner(12, 12).setIdentity();
     L1.bottomRightCorner(12, 12) = A;
-    Eigen::GeneralizedEigenSolver<M24<S>> ges(L0, L1, false);
     out.notes.push_back("leading matrix singular for every θ3 offset: generalized eigenproblem "
                         "(QZ) of the 24×24 pencil");
     out.suspicious = true;
-    if (ges.info() != Eigen::Success) return out;
+    // GeneralizedEigenSolver::info() asserts when its QZ did not converge (Eigen 3.4 sets "values
+    // okay" only on success; found by the sanitized build, where Eigen's assertions are on), so the
+    // convergence is asked of RealQZ itself first; the solver's own QZ then repeats the same
+    // deterministic iteration. Reached only when every θ3 offset leaves the leading matrix singular.
+    if (Eigen::RealQZ<M24<S>>(L0, L1, false).info() != Eigen::Success) {
+      out.notes.push_back("the QZ iteration did not converge: no eigenvalues");
+      return out;
+    }
+    Eigen::GeneralizedEigenSolver<M24<S>> ges(L0, L1, false);
     for (int i = 0; i < 24; ++i) {
       const S be = ges.betas()(i);
       const std::complex<S> al = ges.alphas()(i);
