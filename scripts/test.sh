@@ -38,7 +38,7 @@ echo "soma benchmarks: compiled in $(( $(date +%s) - tests_done )) s"
 # sanitized `soma` built with SOMA_CLI_STUDIES=OFF) pass sanitized too (2026-12-04: 305 serial and
 # CLI tests, 0 reports, 89 s of wall), but not in CI's 45 minutes: `soma` needs the dynamics ladder
 # (the preset builds it for double only) and its own libraries, 543 s of CPU more, and the clean-clone
-# run that had them took ~47 min. Run them so (tests/fuzz/README.md):
+# run that had them was stopped 31 min in, at 130 of its 237 fuzz-build steps (projected ~50 min). Run them so (tests/fuzz/README.md):
 #   SOMA_SANITIZE_TESTS="io algebra geometry/lines geometry/serial cli" bash scripts/test.sh
 # (with `cli` among the areas the fuzz build is configured with the whole ladder)
 # where the default exclusions also leave out the Stewart CLI tests (~8 s each: the 128-path start
