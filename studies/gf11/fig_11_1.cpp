@@ -8,6 +8,7 @@
 #include "soma/io/platform_file.hpp"
 #include "soma/render/render.hpp"
 #include "soma/studies/study.hpp"
+#include "platform_plate.hpp"
 #include "stewart_phc.hpp"
 
 #include <fmt/format.h>
@@ -43,24 +44,8 @@ void drawFigure(Context& c, const StewartPlatform<S>& P, const StewartForwardSol
     base.push_back(P.base[std::size_t(i)]);
     top.push_back(s.postures[shown].act(P.platform[std::size_t(i)]));
   }
-  auto plate = [&](const std::vector<Eigen::Vector3d>& v, rd::Color col) {
-    rd::Mesh m;  // a fan over the joint centres (they are not coplanar: the plate is slightly bent)
-    Eigen::Vector3d ctr = Eigen::Vector3d::Zero();
-    for (const auto& x : v) ctr += x / 6.0;
-    m.v = v;
-    m.v.push_back(ctr);
-    for (int i = 0; i < 6; ++i) m.tri.push_back(Eigen::Vector3i(6, i, (i + 1) % 6));
-    m.c = col;
-    scene.add(m);
-    rd::Tube rim;
-    rim.p = v;
-    rim.closed = true;
-    rim.radius = 0.012;
-    rim.c = rd::palette::darkGrey;
-    scene.add(rim);
-  };
-  plate(base, rd::palette::lightGrey);
-  plate(top, rd::palette::orange.withAlpha(0.75f));
+  gf11::addPlate(scene, base, rd::palette::darkGrey, 0.012, rd::palette::lightGrey);
+  gf11::addPlate(scene, top, rd::palette::darkGrey, 0.012, rd::palette::orange.withAlpha(0.75f));
   for (int i = 0; i < 6; ++i) {
     // a hydraulic leg: the cylinder on the base joint, the thinner piston rod to the platform joint
     const Eigen::Vector3d a = base[std::size_t(i)], b = top[std::size_t(i)];

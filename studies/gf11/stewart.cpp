@@ -10,6 +10,7 @@
 #include "soma/render/svg.hpp"
 #include "soma/render/render.hpp"
 #include "soma/studies/study.hpp"
+#include "platform_plate.hpp"
 
 #include <fmt/format.h>
 
@@ -90,26 +91,8 @@ void postureGrid(Context& c, const StewartPlatform<S>& P, const StewartForwardSo
       base.push_back(P.base[i] + o);
       top.push_back(s.postures[k].act(P.platform[i]) + o);
     }
-    rd::Tube bt;
-    bt.p = base;
-    bt.closed = true;
-    bt.radius = 0.025;
-    bt.c = rd::palette::darkGrey;
-    scene.add(bt);
-    rd::Tube pt;
-    pt.p = top;
-    pt.closed = true;
-    pt.radius = 0.03;
-    pt.c = rd::palette::orange;
-    scene.add(pt);
-    rd::Mesh m;  // the platform plate, a fan over its joint centres
-    Eigen::Vector3d ctr = Eigen::Vector3d::Zero();
-    for (const auto& v : top) ctr += v / 6.0;
-    m.v = top;
-    m.v.push_back(ctr);
-    for (int i = 0; i < 6; ++i) m.tri.push_back(Eigen::Vector3i(6, i, (i + 1) % 6));
-    m.c = rd::palette::orange.withAlpha(0.45f);
-    scene.add(m);
+    gf11::addPlate(scene, base, rd::palette::darkGrey, 0.025);
+    gf11::addPlate(scene, top, rd::palette::orange, 0.03, rd::palette::orange.withAlpha(0.45f));
     for (int i = 0; i < 6; ++i) {
       rd::Tube leg;
       leg.p = {base[i], top[i]};
