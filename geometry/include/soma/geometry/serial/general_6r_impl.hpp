@@ -1,6 +1,7 @@
 #pragma once
 // Template bodies of the general-6R solver (general_6r.hpp). Included only by the
 // instantiating TUs (soma_instantiate, cmake/SomaInstantiate.cmake) and general_6r_{ceres,nlopt}.cpp.
+#include "soma/algebra/small_eigenvalues.hpp"
 #include "soma/geometry/serial/general_6r.hpp"
 
 #include <Eigen/Dense>
@@ -185,188 +186,6 @@ template <class S> struct Lu12 {
 /// Working storage of the small eigenproblems: a fixed 24×24 array, the active size n ≤ 24.
 template <class S> using Work24 = Eigen::Matrix<S, 24, 24>;
 
-/// Householder vector of x (length m): v with v(0) = 1 and β such that (I − β v vᵀ) x = α e1.
-/// Returns false when x is already a multiple of e1 (nothing to do).
-template <class S> bool householderOf(const S* x, int m, S* v, S& beta, S& alpha) {
-  using std::sqrt;
-  S tail2 = S(0);
-  for (int i = 1; i < m; ++i) tail2 += x[i] * x[i];
-  if (tail2 == S(0)) return false;
-  const S norm = sqrt(x[0] * x[0] + tail2);
-  alpha = x[0] > S(0) ? S(-norm) : norm;
-  const S v0 = x[0] - alpha;
-  v[0] = S(1);
-  for (int i = 1; i < m; ++i) v[i] = x[i] / v0;
-  beta = -v0 / alpha;
-  return true;
-}
-
-/// H ← (I − β v vᵀ) H (I − β v vᵀ) for v supported on rows/columns [r, r + m) of the n×n H.
-template <class S> void reflectBothSides(Work24<S>& H, int n, int r, int m, const S* v, const S& beta) {
-  for (int j = 0; j < n; ++j) {  // from the left: rows r..r+m−1
-    S d = S(0);
-    for (int i = 0; i < m; ++i) d += v[i] * H(r + i, j);
-    d *= beta;
-    if (d != S(0))
-      for (int i = 0; i < m; ++i) H(r + i, j) -= d * v[i];
-  }
-  for (int i = 0; i < n; ++i) {  // from the right: columns r..r+m−1
-    S d = S(0);
-    for (int j = 0; j < m; ++j) d += H(i, r + j) * v[j];
-    d *= beta;
-    if (d != S(0))
-      for (int j = 0; j < m; ++j) H(i, r + j) -= d * v[j];
-  }
-}
-
-/// Eigenvalues of the upper-left n×n block of H (destroyed), n ≤ 24: Householder reduction to
-/// Hessenberg form, then Francis double-shift QR steps with deflation at negligible subdiagonal
-/// entries (Golub & Van Loan, Matrix Computations, Alg. 7.4.2 and 7.5.1–7.5.2), eigenvalues
-/// only (no Schur vectors), on fixed-size storage. Returns false when an eigenvalue needed more
-/// than 60 iterations (the caller falls back to Eigen's EigenSolver).
-template <class S> bool smallEigenvalues(Work24<S>& H, int n, std::vector<std::complex<S>>& lambda) {
-  using std::abs;
-  using std::sqrt;
-  lambda.clear();
-  std::array<S, 24> v;
-  for (int k = 0; k + 2 < n; ++k) {  // Hessenberg reduction
-    std::array<S, 24> x;
-    const int m = n - k - 1;
-    for (int i = 0; i < m; ++i) x[i] = H(k + 1 + i, k);
-    S beta, alpha;
-    if (!householderOf(x.data(), m, v.data(), beta, alpha)) continue;
-    reflectBothSides(H, n, k + 1, m, v.data(), beta);
-    H(k + 1, k) = alpha;
-    for (int i = k + 2; i < n; ++i) H(i, k) = S(0);
-  }
-  const S eps = Tolerance<S>::epsilon();
-  S norm = S(0);
-  for (int i = 0; i < n; ++i)
-    for (int j = std::max(0, i - 1); j < n; ++j) norm += abs(H(i, j));
-  if (norm == S(0)) {
-    for (int i = 0; i < n; ++i) lambda.emplace_back(S(0), S(0));
-    return true;
-  }
-  int hi = n - 1, its = 0;
-  S shiftTotal = S(0);  // exceptional shifts applied to the diagonal
-  while (hi >= 0) {
-    // Active block [lo, hi]: the first negligible subdiagonal entry from the bottom.
-    int lo = hi;
-    for (; lo > 0; --lo) {
-      S sc = abs(H(lo - 1, lo - 1)) + abs(H(lo, lo));
-      if (sc == S(0)) sc = norm;
-      if (abs(H(lo, lo - 1)) <= eps * sc) {
-        H(lo, lo - 1) = S(0);
-        break;
-      }
-    }
-    const S x = H(hi, hi);
-    if (lo == hi) {  // a real eigenvalue splits off
-      lambda.emplace_back(x + shiftTotal, S(0));
-      --hi;
-      its = 0;
-      continue;
-    }
-    const S y = H(hi - 1, hi - 1), w = H(hi, hi - 1) * H(hi - 1, hi);
-    if (lo == hi - 1) {  // a 2×2 block: two real eigenvalues or a complex pair
-      const S p = (y - x) / S(2), q = p * p + w;
-      const S z = sqrt(abs(q));
-      if (q >= S(0)) {
-        const S zz = p >= S(0) ? S(p + z) : S(p - z);
-        const S e1 = x + zz, e2 = zz != S(0) ? S(x - w / zz) : e1;
-        lambda.emplace_back(e1 + shiftTotal, S(0));
-        lambda.emplace_back(e2 + shiftTotal, S(0));
-      } else {
-        lambda.emplace_back(x + p + shiftTotal, z);
-        lambda.emplace_back(x + p + shiftTotal, -z);
-      }
-      hi -= 2;
-      its = 0;
-      continue;
-    }
-    if (its >= 60) return false;
-    S sx = x, sy = y, sw = w;  // shifts: the eigenvalues of the trailing 2×2 block
-    if (its == 10 || its == 20) {  // exceptional shift (breaks cycles)
-      shiftTotal += x;
-      for (int i = 0; i <= hi; ++i) H(i, i) -= x;
-      const S sc = abs(H(hi, hi - 1)) + abs(H(hi - 1, hi - 2));
-      sx = sy = S(3) / S(4) * sc;
-      sw = S(-7) / S(16) * sc * sc;
-    }
-    ++its;
-    // First column of (H − s1)(H − s2) restricted to rows m..m+2, started at the lowest m ≥ lo
-    // where the bulge does not disturb the small subdiagonal entry above it.
-    int m = hi - 2;
-    S p = S(0), q = S(0), r = S(0);
-    for (; m >= lo; --m) {
-      const S z = H(m, m);
-      const S rr = sx - z, ss = sy - z;
-      p = (rr * ss - sw) / H(m + 1, m) + H(m, m + 1);
-      q = H(m + 1, m + 1) - z - rr - ss;
-      r = H(m + 2, m + 1);
-      const S sc = abs(p) + abs(q) + abs(r);
-      p /= sc;
-      q /= sc;
-      r /= sc;
-      if (m == lo) break;
-      const S u = abs(H(m, m - 1)) * (abs(q) + abs(r));
-      const S vv = abs(p) * (abs(H(m - 1, m - 1)) + abs(z) + abs(H(m + 1, m + 1)));
-      if (u <= eps * vv) break;
-    }
-    for (int i = m + 2; i <= hi; ++i) {
-      H(i, i - 2) = S(0);
-      if (i != m + 2) H(i, i - 3) = S(0);
-    }
-    // Chase the bulge with 3-element reflectors (2-element at the bottom).
-    for (int k = m; k < hi; ++k) {
-      const bool last = k == hi - 1;
-      S scale = S(1);
-      if (k != m) {
-        p = H(k, k - 1);
-        q = H(k + 1, k - 1);
-        r = last ? S(0) : H(k + 2, k - 1);
-        scale = abs(p) + abs(q) + abs(r);
-        if (scale == S(0)) continue;
-        p /= scale;
-        q /= scale;
-        r /= scale;
-      }
-      S sn = sqrt(p * p + q * q + r * r);
-      if (p < S(0)) sn = -sn;
-      if (sn == S(0)) continue;
-      if (k == m) {
-        if (lo != m) H(k, k - 1) = -H(k, k - 1);
-      } else {
-        H(k, k - 1) = -sn * scale;
-      }
-      p += sn;
-      const S vx = p / sn, vy = q / sn, vz = r / sn;
-      q /= p;
-      r /= p;
-      for (int j = k; j <= hi; ++j) {  // rows k..k+2
-        S d = H(k, j) + q * H(k + 1, j);
-        if (!last) {
-          d += r * H(k + 2, j);
-          H(k + 2, j) -= d * vz;
-        }
-        H(k + 1, j) -= d * vy;
-        H(k, j) -= d * vx;
-      }
-      const int iMax = std::min(hi, k + 3);
-      for (int i = lo; i <= iMax; ++i) {  // columns k..k+2
-        S d = vx * H(i, k) + vy * H(i, k + 1);
-        if (!last) {
-          d += vz * H(i, k + 2);
-          H(i, k + 2) -= d * r;
-        }
-        H(i, k + 1) -= d * q;
-        H(i, k) -= d;
-      }
-    }
-  }
-  return true;
-}
-
 /// Deflation of the extraneous eigenvalues x3 = ±i of the companion matrix K of
 /// M(x) = A x² + B x + C (K is 24×24 in the first block of `H`; on success the 16×16 block
 /// with the genuine eigenvalues is left in the first block of `H`). M(i) = (C − A) + iB has a
@@ -376,13 +195,15 @@ template <class S> bool smallEigenvalues(Work24<S>& H, int n, std::vector<std::c
 /// Z = [[C − A, −B], [B, C − A]] acting on (Re w, Im w), w = v_j and i v_j (before: a full-pivot LU
 /// of that 24×24 real Z, 5× the work).
 /// The eigenvectors of K are (v, x v), so {(Re v, −Im v)} spans the real invariant subspace of
-/// ±i; with U the Householder reflectors of a QR of that 24×8 basis, UᵀKU is block upper
-/// triangular and its trailing 16×16 block carries the 16 genuine eigenvalues. `defect` =
-/// |lower-left 16×8 block| / |K|: the deflation is used when it is at round-off
-/// (Tolerance::identity(4096)); otherwise false and H still holds K.
+/// ±i; an elementary (Gauss) similarity T with T·basis = [I; 0] (complete pivoting, below) makes
+/// TKT⁻¹ block upper triangular, its trailing 16×16 block carrying the 16 genuine eigenvalues
+/// (before: 8 Householder reflectors on both sides of K, 8× the work). `defect` = (1 + ‖G‖)²
+/// |lower-left 16×8 block| / |K|, the backward error of dropping that block: the deflation is used
+/// when it is at round-off (Tolerance::identity(4096)); otherwise false and H still holds K.
 // Manocha & Canny (1994) eigenproblem; GF §11.5 (16 postures)
 template <class S>
 bool deflateExtraneous(Work24<S>& H, const M12<S>& A, const M12<S>& B, const M12<S>& C, S& defect) {
+  using std::abs;
   M12<S> zr = C - A, zi = B;  // M(i) = zr + i zi, eliminated in place
   std::array<int, 12> col;    // col[c]: the original column now at position c
   for (int c = 0; c < 12; ++c) col[c] = c;
@@ -417,7 +238,7 @@ bool deflateExtraneous(Work24<S>& H, const M12<S>& A, const M12<S>& B, const M12
     rank = k + 1;
   }
   if (rank != 8) return false;
-  Work24<S> W;  // columns 2j, 2j + 1: (Re w, −Im w) for w = v_j and i v_j
+  Eigen::Matrix<S, 24, 8> W;  // columns 2j, 2j + 1: (Re w, −Im w) for w = v_j and i v_j
   for (int j = 0; j < 4; ++j) {
     // Kernel vector in the permuted order: y_{8+j} = 1, the others of 8..11 zero, y_0..7 from U11 y = −U12 e_j.
     std::array<S, 12> yr{}, yi{};
@@ -440,25 +261,82 @@ bool deflateExtraneous(Work24<S>& H, const M12<S>& A, const M12<S>& B, const M12
       W(12 + i, 2 * j + 1) = -yr[c];
     }
   }
-  const S kn = H.norm();
-  Work24<S> K = H;
-  std::array<S, 24> x, v;
-  for (int k = 0; k < 8; ++k) {  // Householder QR of W, each reflector applied to K at once
-    const int m = 24 - k;
-    for (int i = 0; i < m; ++i) x[i] = W(k + i, k);
-    S beta, alpha;
-    if (!householderOf(x.data(), m, v.data(), beta, alpha)) continue;
-    for (int j = k + 1; j < 8; ++j) {
-      S d = S(0);
-      for (int i = 0; i < m; ++i) d += v[i] * W(k + i, j);
-      d *= beta;
-      for (int i = 0; i < m; ++i) W(k + i, j) -= d * v[i];
+  // Gauss–Jordan with complete pivoting on the columns of W: W Z1⁻¹ = [I; G] on its pivot rows
+  // (8 rows p_k; G the 16×8 rest, |G| small by the pivoting). With Π the permutation putting the
+  // pivot rows first and T = [[I, 0], [−G, I]]Π, T W = [I; 0]: T K T⁻¹ is block upper triangular,
+  // its trailing block N = K22 − G K12 (16×16) carries the 16 genuine eigenvalues and its
+  // lower-left block D = N G + K21 − G K11 vanishes up to round-off. This elementary similarity
+  // costs ~2k multiply-adds where the 8 Householder reflectors on both sides of K cost ~16k.
+  std::array<int, 8> prow, pcol;
+  std::array<bool, 24> isPivot{};
+  std::array<bool, 8> usedCol{};
+  for (int k = 0; k < 8; ++k) {
+    int p = -1, c = -1;
+    S best = S(0);
+    for (int j = 0; j < 8; ++j) {
+      if (usedCol[j]) continue;
+      for (int i = 0; i < 24; ++i)
+        if (!isPivot[i] && abs(W(i, j)) > best) best = abs(W(i, j)), p = i, c = j;
     }
-    reflectBothSides(K, 24, k, m, v.data(), beta);
+    if (p < 0) return false;
+    isPivot[p] = usedCol[c] = true;
+    prow[k] = p;
+    pcol[k] = c;
+    const S inv = S(1) / W(p, c);
+    for (int i = 0; i < 24; ++i) W(i, c) *= inv;
+    W(p, c) = S(1);
+    for (int j = 0; j < 8; ++j) {
+      if (j == c) continue;
+      const S f = W(p, j);
+      if (f == S(0)) continue;
+      for (int i = 0; i < 24; ++i) W(i, j) -= f * W(i, c);
+      W(p, j) = S(0);
+    }
   }
-  defect = kn > S(0) ? S(K.block(8, 0, 16, 8).norm() / kn) : S(1);
+  std::array<int, 16> rest;
+  for (int i = 0, r = 0; i < 24; ++i)
+    if (!isPivot[i]) rest[r++] = i;
+  Eigen::Matrix<S, 16, 8> G;
+  S gn = S(0);
+  for (int k = 0; k < 8; ++k)
+    for (int r = 0; r < 16; ++r) {
+      G(r, k) = W(rest[r], pcol[k]);
+      gn += G(r, k) * G(r, k);
+    }
+  using std::sqrt;
+  gn = sqrt(gn);
+  const S kn = H.norm();
+  // N = K22 − G K12 into a fresh 16×16 block (H still holds K).
+  Work24<S> Nm;
+  for (int s = 0; s < 16; ++s) {
+    const int cs = rest[s];
+    for (int r = 0; r < 16; ++r) Nm(r, s) = H(rest[r], cs);
+    for (int k = 0; k < 8; ++k) {
+      const S f = H(prow[k], cs);
+      if (f != S(0))
+        for (int r = 0; r < 16; ++r) Nm(r, s) -= G(r, k) * f;
+    }
+  }
+  // D = N G + K21 − G K11, measured as the backward error it stands for in K's coordinates:
+  // ‖T⁻¹ [[0, 0], [D, 0]] T‖ ≤ (1 + ‖G‖)² ‖D‖.
+  S dn = S(0);
+  for (int l = 0; l < 8; ++l) {
+    std::array<S, 16> d;
+    for (int r = 0; r < 16; ++r) d[r] = H(rest[r], prow[l]);
+    for (int s = 0; s < 16; ++s) {
+      const S g = G(s, l);
+      for (int r = 0; r < 16; ++r) d[r] += Nm(r, s) * g;
+    }
+    for (int k = 0; k < 8; ++k) {
+      const S f = H(prow[k], prow[l]);
+      for (int r = 0; r < 16; ++r) d[r] -= G(r, k) * f;
+    }
+    for (int r = 0; r < 16; ++r) dn += d[r] * d[r];
+  }
+  const S grow = (S(1) + gn) * (S(1) + gn);
+  defect = kn > S(0) ? S(grow * sqrt(dn) / kn) : S(1);
   if (!(defect <= Tolerance<S>::identity(4096))) return false;
-  H.topLeftCorner(16, 16) = K.block(8, 8, 16, 16);
+  H.topLeftCorner(16, 16) = Nm.topLeftCorner(16, 16);
   return true;
 }
 
@@ -658,7 +536,7 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
       out.notes.push_back("deflation of x3 = ±i not clean (defect " + toString(toDouble(defect), 3) +
                           "): full 24×24 eigenproblem");
     const Work24<S> Hn = H;
-    if (!smallEigenvalues<S>(H, n, lambdas)) {
+    if (!detail::smallEigenvalues<S, 24>(H, n, lambdas)) {
       const MX<S> Kn = Hn.topLeftCorner(n, n);
       out.notes.push_back("Francis QR did not converge on the " + std::to_string(n) + "×" +
                           std::to_string(n) + " matrix: Eigen's EigenSolver used");

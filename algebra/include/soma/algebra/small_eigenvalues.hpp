@@ -1,0 +1,204 @@
+#pragma once
+// Eigenvalues of a small real matrix (n ≤ N, fixed-size storage), eigenvalues only: Gaussian
+// reduction to upper Hessenberg form with row interchanges (EISPACK ELMHES; Wilkinson & Reinsch,
+// Handbook for Automatic Computation II, 1971), then Francis double-shift QR steps with deflation at
+// negligible subdiagonal entries (EISPACK HQR; Golub & Van Loan, Matrix Computations, Alg. 7.5.1–7.5.2).
+// Hand-written for speed, not for want of a library: the general-6R solver (GF §11.5, its 16
+// postures are the eigenvalues of a 16×16 matrix) spends most of its time here, and Eigen's
+// dynamic-size EigenSolver cost ~2.5× this; the stabilised elementary (Gauss) reduction takes half
+// the flops of Householder's and is the EISPACK RG path's. Checked against Eigen's EigenSolver
+// (tests/algebra/small_eigenvalues.cpp).
+#include "soma/algebra/tolerance.hpp"
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <complex>
+#include <utility>
+#include <vector>
+
+namespace soma::detail {
+
+/// Upper Hessenberg form of the leading n×n block of H by stabilised elementary similarity
+/// transformations (partial pivoting on the subdiagonal column, ELMHES); entries below the
+/// subdiagonal are set to zero. Same eigenvalues, ~(5/6)n³ multiply-adds.
+template <class S, int N> void smallHessenbergGauss(Eigen::Matrix<S, N, N>& H, int n) {
+  using std::abs;
+  S y[N];
+  for (int m = 1; m + 1 < n; ++m) {
+    int piv = m;
+    S best = abs(H(m, m - 1));
+    for (int i = m + 1; i < n; ++i)
+      if (abs(H(i, m - 1)) > best) best = abs(H(i, m - 1)), piv = i;
+    if (best == S(0)) continue;
+    if (piv != m) {  // P H P with P swapping rows/columns piv and m
+      for (int j = m - 1; j < n; ++j) std::swap(H(piv, j), H(m, j));
+      for (int i = 0; i < n; ++i) std::swap(H(i, piv), H(i, m));
+    }
+    const S x = H(m, m - 1);
+    bool any = false;
+    for (int i = m + 1; i < n; ++i) {
+      y[i] = H(i, m - 1) / x;
+      H(i, m - 1) = S(0);
+      any = any || y[i] != S(0);
+    }
+    if (!any) continue;
+    for (int j = m; j < n; ++j) {  // rows i -= y_i · row m (column by column: contiguous)
+      const S hm = H(m, j);
+      if (hm != S(0))
+        for (int i = m + 1; i < n; ++i) H(i, j) -= y[i] * hm;
+    }
+    for (int i = m + 1; i < n; ++i) {  // column m += y_i · column i
+      const S yi = y[i];
+      if (yi != S(0))
+        for (int r = 0; r < n; ++r) H(r, m) += yi * H(r, i);
+    }
+  }
+}
+
+/// Eigenvalues of an upper Hessenberg n×n block of H (destroyed) by Francis double-shift QR steps
+/// (EISPACK HQR), exceptional shifts at the 10th and 20th iteration of an eigenvalue. Returns
+/// false when an eigenvalue needed more than 60 iterations (lambda then incomplete).
+template <class S, int N>
+bool smallHessenbergEigenvalues(Eigen::Matrix<S, N, N>& H, int n, std::vector<std::complex<S>>& lambda) {
+  using std::abs;
+  using std::sqrt;
+  lambda.clear();
+  const S eps = Tolerance<S>::epsilon();
+  S norm = S(0);
+  for (int i = 0; i < n; ++i)
+    for (int j = std::max(0, i - 1); j < n; ++j) norm += abs(H(i, j));
+  if (norm == S(0)) {
+    for (int i = 0; i < n; ++i) lambda.emplace_back(S(0), S(0));
+    return true;
+  }
+  int hi = n - 1, its = 0;
+  S shiftTotal = S(0);  // exceptional shifts applied to the diagonal
+  while (hi >= 0) {
+    // Active block [lo, hi]: the first negligible subdiagonal entry from the bottom.
+    int lo = hi;
+    for (; lo > 0; --lo) {
+      S sc = abs(H(lo - 1, lo - 1)) + abs(H(lo, lo));
+      if (sc == S(0)) sc = norm;
+      if (abs(H(lo, lo - 1)) <= eps * sc) {
+        H(lo, lo - 1) = S(0);
+        break;
+      }
+    }
+    const S x = H(hi, hi);
+    if (lo == hi) {  // a real eigenvalue splits off
+      lambda.emplace_back(x + shiftTotal, S(0));
+      --hi;
+      its = 0;
+      continue;
+    }
+    const S y = H(hi - 1, hi - 1), w = H(hi, hi - 1) * H(hi - 1, hi);
+    if (lo == hi - 1) {  // a 2×2 block: two real eigenvalues or a complex pair
+      const S p = (y - x) / S(2), q = p * p + w;
+      const S z = sqrt(abs(q));
+      if (q >= S(0)) {
+        const S zz = p >= S(0) ? S(p + z) : S(p - z);
+        const S e1 = x + zz, e2 = zz != S(0) ? S(x - w / zz) : e1;
+        lambda.emplace_back(e1 + shiftTotal, S(0));
+        lambda.emplace_back(e2 + shiftTotal, S(0));
+      } else {
+        lambda.emplace_back(x + p + shiftTotal, z);
+        lambda.emplace_back(x + p + shiftTotal, -z);
+      }
+      hi -= 2;
+      its = 0;
+      continue;
+    }
+    if (its >= 60) return false;
+    S sx = x, sy = y, sw = w;  // shifts: the eigenvalues of the trailing 2×2 block
+    if (its == 10 || its == 20) {  // exceptional shift (breaks cycles)
+      shiftTotal += x;
+      for (int i = 0; i <= hi; ++i) H(i, i) -= x;
+      const S sc = abs(H(hi, hi - 1)) + abs(H(hi - 1, hi - 2));
+      sx = sy = S(3) / S(4) * sc;
+      sw = S(-7) / S(16) * sc * sc;
+    }
+    ++its;
+    // First column of (H − s1)(H − s2) restricted to rows m..m+2, started at the lowest m ≥ lo
+    // where the bulge does not disturb the small subdiagonal entry above it.
+    int m = hi - 2;
+    S p = S(0), q = S(0), r = S(0);
+    for (; m >= lo; --m) {
+      const S z = H(m, m);
+      const S rr = sx - z, ss = sy - z;
+      p = (rr * ss - sw) / H(m + 1, m) + H(m, m + 1);
+      q = H(m + 1, m + 1) - z - rr - ss;
+      r = H(m + 2, m + 1);
+      const S sc = abs(p) + abs(q) + abs(r);
+      p /= sc;
+      q /= sc;
+      r /= sc;
+      if (m == lo) break;
+      const S u = abs(H(m, m - 1)) * (abs(q) + abs(r));
+      const S vv = abs(p) * (abs(H(m - 1, m - 1)) + abs(z) + abs(H(m + 1, m + 1)));
+      if (u <= eps * vv) break;
+    }
+    for (int i = m + 2; i <= hi; ++i) {
+      H(i, i - 2) = S(0);
+      if (i != m + 2) H(i, i - 3) = S(0);
+    }
+    // Chase the bulge with 3-element reflectors (2-element at the bottom).
+    for (int k = m; k < hi; ++k) {
+      const bool last = k == hi - 1;
+      S scale = S(1);
+      if (k != m) {
+        p = H(k, k - 1);
+        q = H(k + 1, k - 1);
+        r = last ? S(0) : H(k + 2, k - 1);
+        scale = abs(p) + abs(q) + abs(r);
+        if (scale == S(0)) continue;
+        p /= scale;
+        q /= scale;
+        r /= scale;
+      }
+      S sn = sqrt(p * p + q * q + r * r);
+      if (p < S(0)) sn = -sn;
+      if (sn == S(0)) continue;
+      if (k == m) {
+        if (lo != m) H(k, k - 1) = -H(k, k - 1);
+      } else {
+        H(k, k - 1) = -sn * scale;
+      }
+      p += sn;
+      const S vx = p / sn, vy = q / sn, vz = r / sn;
+      q /= p;
+      r /= p;
+      for (int j = k; j <= hi; ++j) {  // rows k..k+2
+        S d = H(k, j) + q * H(k + 1, j);
+        if (!last) {
+          d += r * H(k + 2, j);
+          H(k + 2, j) -= d * vz;
+        }
+        H(k + 1, j) -= d * vy;
+        H(k, j) -= d * vx;
+      }
+      const int iMax = std::min(hi, k + 3);
+      for (int i = lo; i <= iMax; ++i) {  // columns k..k+2
+        S d = vx * H(i, k) + vy * H(i, k + 1);
+        if (!last) {
+          d += vz * H(i, k + 2);
+          H(i, k + 2) -= d * r;
+        }
+        H(i, k + 1) -= d * q;
+        H(i, k) -= d;
+      }
+    }
+  }
+  return true;
+}
+
+/// Eigenvalues of the leading n×n block of H (destroyed), n ≤ N: smallHessenbergGauss, then
+/// smallHessenbergEigenvalues. Returns false when the QR iteration did not converge (the caller
+/// falls back to Eigen's EigenSolver).
+template <class S, int N>
+bool smallEigenvalues(Eigen::Matrix<S, N, N>& H, int n, std::vector<std::complex<S>>& lambda) {
+  smallHessenbergGauss<S, N>(H, n);
+  return smallHessenbergEigenvalues<S, N>(H, n, lambda);
+}
+
+}  // namespace soma::detail

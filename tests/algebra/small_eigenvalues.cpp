@@ -1,0 +1,136 @@
+// Eigenvalues of small real matrices (algebra/small_eigenvalues.hpp: Gaussian Hessenberg
+// reduction + Francis double-shift QR on fixed-size storage) against known spectra and against
+// Eigen's EigenSolver, with tolerances from the backward error of the two methods.
+#include "soma/algebra/small_eigenvalues.hpp"
+
+#include "support/scalars.hpp"
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
+using namespace soma;
+
+namespace {
+
+using Mat24 = Eigen::Matrix<double, 24, 24>;
+using MatX = Eigen::MatrixXd;
+using CMatX = Eigen::MatrixXcd;
+
+/// Backward error of an elementary (Gauss) Hessenberg reduction followed by Francis QR: the
+/// computed eigenvalues are exact for A + E with ‖E‖ ≤ c·n²·g·eps·‖A‖ (Wilkinson; g the growth
+/// factor of the pivoted elimination, ~1 in practice), taken with c·g = 1.
+double backwardError(const MatX& a) {
+  const double n = double(a.rows());
+  return n * n * Tolerance<double>::epsilon() * a.norm();
+}
+
+/// Greedy matching of two eigenvalue lists: for each of `got`, the nearest unused of `want`.
+std::vector<std::pair<std::complex<double>, int>> match(const std::vector<std::complex<double>>& got,
+                                                        const std::vector<std::complex<double>>& want) {
+  std::vector<bool> used(want.size(), false);
+  std::vector<std::pair<std::complex<double>, int>> out;
+  for (const auto& z : got) {
+    int best = -1;
+    for (int j = 0; j < int(want.size()); ++j)
+      if (!used[j] && (best < 0 || std::abs(want[j] - z) < std::abs(want[best] - z))) best = j;
+    if (best >= 0) used[best] = true;
+    out.emplace_back(z, best);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("small eigenvalues: normal matrices with a known spectrum, sizes 1 to 24", "[small_eigenvalues]",
+                   float, double, long double) {
+  using S = TestType;
+  using M = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>;
+  using C = std::complex<S>;
+  auto& g = test::rng(20261204);
+  for (int n = 1; n <= 24; ++n)
+    for (int trial = 0; trial < 4; ++trial) {
+      // A = Q D Qᵀ, Q orthogonal, D block diagonal: real eigenvalues and 2×2 blocks [[a, b], [−b, a]]
+      // (the pair a ± ib). A is normal, so every eigenvalue's condition number is 1 and the error
+      // of each is at most the backward error (plus the rounding of forming A, ~n eps ‖A‖).
+      M d = M::Zero(n, n);
+      std::vector<C> want;
+      for (int i = 0; i < n;) {
+        if (i + 1 < n && test::uniform<double>(g) > 0) {
+          const S a = test::uniform<S>(g, -2, 2), b = test::uniform<S>(g, 0.1, 2);
+          d(i, i) = d(i + 1, i + 1) = a;
+          d(i, i + 1) = b;
+          d(i + 1, i) = -b;
+          want.emplace_back(a, b);
+          want.emplace_back(a, -b);
+          i += 2;
+        } else {
+          d(i, i) = test::uniform<S>(g, -2, 2);
+          want.emplace_back(d(i, i), S(0));
+          ++i;
+        }
+      }
+      M r(n, n);
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) r(i, j) = test::uniform<S>(g);
+      const M q = Eigen::HouseholderQR<M>(r).householderQ();
+      const M a = q * d * q.transpose();
+      Eigen::Matrix<S, 24, 24> h = Eigen::Matrix<S, 24, 24>::Zero();
+      h.topLeftCorner(n, n) = a;
+      std::vector<C> got;
+      REQUIRE(detail::smallEigenvalues<S, 24>(h, n, got));
+      REQUIRE(int(got.size()) == n);
+      const S tol = S(n) * S(n + 1) * Tolerance<S>::epsilon() * a.norm();  // backward error + forming A
+      std::vector<bool> used(want.size(), false);
+      for (const auto& z : got) {
+        int best = -1;
+        for (int j = 0; j < int(want.size()); ++j)
+          if (!used[j] && (best < 0 || std::abs(want[j] - z) < std::abs(want[best] - z))) best = j;
+        REQUIRE(best >= 0);
+        used[best] = true;
+        INFO("n " << n << " eigenvalue " << toDouble(z.real()) << " + " << toDouble(z.imag()) << "i");
+        CHECK(std::abs(z - want[best]) <= tol);
+      }
+    }
+}
+
+TEST_CASE("small eigenvalues: random matrices agree with Eigen's EigenSolver within κ × backward error",
+          "[small_eigenvalues]") {
+  auto& g = test::rng(20261205);
+  int compared = 0;
+  for (int n = 1; n <= 24; ++n)
+    for (int trial = 0; trial < 20; ++trial) {
+      MatX a(n, n);
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) a(i, j) = test::uniform<double>(g);
+      if (trial % 5 == 4)  // a companion matrix, the structure of the 6R eigenproblem
+        for (int i = 0; i + 1 < n; ++i) {
+          a.row(i).setZero();
+          a(i, i + 1) = 1;
+        }
+      Eigen::EigenSolver<MatX> es(a, true);
+      REQUIRE(es.info() == Eigen::Success);
+      const CMatX v = es.eigenvectors();
+      const CMatX w = v.inverse();  // rows: left eigenvectors with w_i v_i = 1
+      std::vector<std::complex<double>> want;
+      for (int i = 0; i < n; ++i) want.push_back(es.eigenvalues()(i));
+      Mat24 h = Mat24::Zero();
+      h.topLeftCorner(n, n) = a;
+      std::vector<std::complex<double>> got;
+      REQUIRE(detail::smallEigenvalues<double, 24>(h, n, got));
+      REQUIRE(int(got.size()) == n);
+      for (const auto& [z, j] : match(got, want)) {
+        REQUIRE(j >= 0);
+        // Condition number of the eigenvalue: ‖x‖·‖y‖ / |yᴴx| = ‖v_j‖·‖w_j‖ (w_j v_j = 1); both
+        // methods err by at most κ × their backward error (first order).
+        const double kappa = v.col(j).norm() * w.row(j).norm();
+        INFO("n " << n << " trial " << trial << " eigenvalue " << z << " Eigen " << want[j] << " κ " << kappa);
+        CHECK(std::abs(z - want[j]) <= 2 * kappa * backwardError(a));
+        ++compared;
+      }
+    }
+  CHECK(compared == 20 * 24 * 25 / 2);
+}
+
+}  // namespace SOMA_UNITY_ID
