@@ -133,4 +133,16 @@ TEST_CASE("small eigenvalues: random matrices agree with Eigen's EigenSolver wit
   CHECK(compared == 20 * 24 * 25 / 2);
 }
 
+TEST_CASE("small eigenvalues: no convergence is reported, not hidden", "[small_eigenvalues]") {
+  // A NaN never passes the negligible-subdiagonal test: after 60 iterations the routine returns
+  // false (the general-6R solver then calls Eigen's EigenSolver and says so in its notes).
+  Mat24 h = Mat24::Zero();
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) h(i, j) = 1.0 / double(i + j + 1);
+  h(3, 2) = std::numeric_limits<double>::quiet_NaN();
+  std::vector<std::complex<double>> got;
+  CHECK_FALSE(detail::smallEigenvalues<double, 24>(h, 6, got));
+  CHECK(got.size() < 6);
+}
+
 }  // namespace SOMA_UNITY_ID

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <complex>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -35,10 +36,10 @@ template <class S, int N> void smallHessenbergGauss(Eigen::Matrix<S, N, N>& H, i
       for (int j = m - 1; j < n; ++j) std::swap(H(piv, j), H(m, j));
       for (int i = 0; i < n; ++i) std::swap(H(i, piv), H(i, m));
     }
-    const S x = H(m, m - 1);
+    const S ix = S(1) / H(m, m - 1);  // one division per column (divisions are slow)
     bool any = false;
     for (int i = m + 1; i < n; ++i) {
-      y[i] = H(i, m - 1) / x;
+      y[i] = H(i, m - 1) * ix;
       H(i, m - 1) = S(0);
       any = any || y[i] != S(0);
     }
@@ -129,10 +130,10 @@ bool smallHessenbergEigenvalues(Eigen::Matrix<S, N, N>& H, int n, std::vector<st
       p = (rr * ss - sw) / H(m + 1, m) + H(m, m + 1);
       q = H(m + 1, m + 1) - z - rr - ss;
       r = H(m + 2, m + 1);
-      const S sc = abs(p) + abs(q) + abs(r);
-      p /= sc;
-      q /= sc;
-      r /= sc;
+      const S isc = S(1) / (abs(p) + abs(q) + abs(r));
+      p *= isc;
+      q *= isc;
+      r *= isc;
       if (m == lo) break;
       const S u = abs(H(m, m - 1)) * (abs(q) + abs(r));
       const S vv = abs(p) * (abs(H(m - 1, m - 1)) + abs(z) + abs(H(m + 1, m + 1)));
@@ -152,9 +153,10 @@ bool smallHessenbergEigenvalues(Eigen::Matrix<S, N, N>& H, int n, std::vector<st
         r = last ? S(0) : H(k + 2, k - 1);
         scale = abs(p) + abs(q) + abs(r);
         if (scale == S(0)) continue;
-        p /= scale;
-        q /= scale;
-        r /= scale;
+        const S is = S(1) / scale;  // reciprocals: 3 divisions a step instead of 8
+        p *= is;
+        q *= is;
+        r *= is;
       }
       S sn = sqrt(p * p + q * q + r * r);
       if (p < S(0)) sn = -sn;
@@ -165,27 +167,59 @@ bool smallHessenbergEigenvalues(Eigen::Matrix<S, N, N>& H, int n, std::vector<st
         H(k, k - 1) = -sn * scale;
       }
       p += sn;
-      const S vx = p / sn, vy = q / sn, vz = r / sn;
-      q /= p;
-      r /= p;
-      for (int j = k; j <= hi; ++j) {  // rows k..k+2
-        S d = H(k, j) + q * H(k + 1, j);
-        if (!last) {
-          d += r * H(k + 2, j);
-          H(k + 2, j) -= d * vz;
-        }
-        H(k + 1, j) -= d * vy;
-        H(k, j) -= d * vx;
-      }
+      const S isn = S(1) / sn, ip = S(1) / p;
+      const S vx = p * isn, vy = q * isn, vz = r * isn;
+      q *= ip;
+      r *= ip;
+      // Rows k..k+2 from column k to hi, then columns k..k+2 from row lo to k+3 (eigenvalues
+      // only: nothing outside the active block). Separate 3- and 2-element loops on raw column
+      // pointers (stride N) so that the column update vectorises.
       const int iMax = std::min(hi, k + 3);
-      for (int i = lo; i <= iMax; ++i) {  // columns k..k+2
-        S d = vx * H(i, k) + vy * H(i, k + 1);
-        if (!last) {
-          d += vz * H(i, k + 2);
-          H(i, k + 2) -= d * r;
+      if (!last) {
+        int j = k;
+        if constexpr (std::is_same_v<S, double>) {  // two columns at a time in SSE2 registers
+          typedef double V2 __attribute__((vector_size(16)));
+          for (; j + 1 <= hi; j += 2) {
+            double* a = &H(k, j);
+            double* b = a + N;
+            V2 h0 = {a[0], b[0]}, h1 = {a[1], b[1]}, h2 = {a[2], b[2]};
+            const V2 d = h0 + q * h1 + r * h2;
+            h0 -= d * vx;
+            h1 -= d * vy;
+            h2 -= d * vz;
+            a[0] = h0[0], b[0] = h0[1], a[1] = h1[0], b[1] = h1[1], a[2] = h2[0], b[2] = h2[1];
+          }
         }
-        H(i, k + 1) -= d * q;
-        H(i, k) -= d;
+        for (; j <= hi; ++j) {
+          S* h = &H(k, j);
+          const S d = h[0] + q * h[1] + r * h[2];
+          h[0] -= d * vx;
+          h[1] -= d * vy;
+          h[2] -= d * vz;
+        }
+        S* __restrict c0 = &H(0, k);
+        S* __restrict c1 = &H(0, k + 1);
+        S* __restrict c2 = &H(0, k + 2);
+        for (int i = lo; i <= iMax; ++i) {
+          const S d = vx * c0[i] + vy * c1[i] + vz * c2[i];
+          c0[i] -= d;
+          c1[i] -= d * q;
+          c2[i] -= d * r;
+        }
+      } else {
+        for (int j = k; j <= hi; ++j) {
+          S* h = &H(k, j);
+          const S d = h[0] + q * h[1];
+          h[0] -= d * vx;
+          h[1] -= d * vy;
+        }
+        S* __restrict c0 = &H(0, k);
+        S* __restrict c1 = &H(0, k + 1);
+        for (int i = lo; i <= iMax; ++i) {
+          const S d = vx * c0[i] + vy * c1[i];
+          c0[i] -= d;
+          c1[i] -= d * q;
+        }
       }
     }
   }

@@ -2,6 +2,7 @@
 // Template bodies of the general-6R solver (general_6r.hpp). Included only by the
 // instantiating TUs (soma_instantiate, cmake/SomaInstantiate.cmake) and general_6r_{ceres,nlopt}.cpp.
 #include "soma/algebra/small_eigenvalues.hpp"
+#include "soma/algebra/small_linalg.hpp"
 #include "soma/geometry/serial/general_6r.hpp"
 
 #include <Eigen/Dense>
@@ -138,11 +139,20 @@ template <class S> S halfAngleFromPairs(const S& num, const S& den) {
 /// takes ~9k instructions to factor at this size, this ~2k; detail::smallSolveInPlace eliminates
 /// again for every right-hand side. `ok` is false when a pivot is exactly zero.
 template <class S> struct Lu12 {
-  S a[12][12];
+  S a[12][12];  ///< U (zero below the diagonal)
+  S l[12][12];  ///< the multipliers of L below the diagonal (unit diagonal implied)
+  S rdiag[12];  ///< 1 / U(i, i): solves multiply (divisions are slow)
   int perm[12];
   bool ok = true;
-  explicit Lu12(const M12<S>& m) {
+  Lu12() = default;
+  explicit Lu12(const M12<S>& m) { factor(m); }
+  void factor(const M12<S>& m) {
     using std::abs;
+    // In hardware floating point every row update runs over all 12 columns (the entries left of
+    // the pivot are zeros on both rows): a fixed trip count that vectorises, ~2× fewer
+    // instructions than the shrinking loop, which software scalars keep.
+    constexpr bool fullRows = std::is_same_v<S, double> || std::is_same_v<S, float>;
+    ok = true;
     for (int i = 0; i < 12; ++i) {
       perm[i] = i;
       for (int j = 0; j < 12; ++j) a[i][j] = m(i, j);
@@ -158,27 +168,93 @@ template <class S> struct Lu12 {
       }
       if (p != c) {
         for (int j = 0; j < 12; ++j) std::swap(a[p][j], a[c][j]);
+        for (int j = 0; j < c; ++j) std::swap(l[p][j], l[c][j]);
         std::swap(perm[p], perm[c]);
       }
+      rdiag[c] = S(1) / a[c][c];
       for (int r = c + 1; r < 12; ++r) {
-        const S f = a[r][c] / a[c][c];
-        a[r][c] = f;
-        for (int j = c + 1; j < 12; ++j) a[r][j] -= f * a[c][j];
+        const S f = a[r][c] * rdiag[c];
+        l[r][c] = f;
+        if constexpr (fullRows) {
+          for (int j = 0; j < 12; ++j) a[r][j] -= f * a[c][j];
+        } else {
+          for (int j = c + 1; j < 12; ++j) a[r][j] -= f * a[c][j];
+        }
+        a[r][c] = S(0);
       }
     }
+  }
+  /// b ← M⁻ᵀ b (PM = LU: Uᵀ z = b, Lᵀ w = z, b(perm) = w).
+  void solveTransposed(Eigen::Matrix<S, 12, 1>& b) const {
+    S z[12];
+    for (int i = 0; i < 12; ++i) {
+      S v = b(i);
+      for (int k = 0; k < i; ++k) v -= a[k][i] * z[k];
+      z[i] = v * rdiag[i];
+    }
+    for (int i = 11; i >= 0; --i) {
+      S v = z[i];
+      for (int k = i + 1; k < 12; ++k) v -= l[k][i] * z[k];
+      z[i] = v;
+    }
+    for (int i = 0; i < 12; ++i) b(perm[i]) = z[i];
+  }
+  /// Reciprocal condition number in the 1-norm, 1 / (‖M‖₁ · est ‖M⁻¹‖₁), by Hager's estimator with
+  /// Higham's alternating-sign safeguard: the algorithm of Eigen's PartialPivLU::rcond()
+  /// (ConditionEstimator.h, step for step), on this factorisation (Eigen's LU + rcond cost ~20k
+  /// instructions here, this ~3k). `l1` = ‖M‖₁; 0 when the factorisation failed.
+  S rcond(const S& l1) const {
+    using std::abs;
+    if (!ok || !(l1 > S(0))) return S(0);
+    using V = Eigen::Matrix<S, 12, 1>;
+    auto norm1 = [](const V& x) {
+      S t = S(0);
+      for (int i = 0; i < 12; ++i) t += abs(x(i));
+      return t;
+    };
+    V v = V::Constant(S(1) / S(12));
+    solve(v);
+    S lower = norm1(v), oldLower = lower;
+    V sign, oldSign;
+    int vmax = -1, oldVmax = -1;
+    for (int k = 0; k < 4; ++k) {
+      for (int i = 0; i < 12; ++i) sign(i) = v(i) < S(0) ? S(-1) : S(1);
+      if (k > 0 && sign == oldSign) break;
+      v = sign;
+      solveTransposed(v);
+      vmax = 0;
+      for (int i = 1; i < 12; ++i)
+        if (abs(v(i)) > abs(v(vmax))) vmax = i;
+      if (vmax == oldVmax) break;
+      v = V::Unit(vmax);
+      solve(v);
+      lower = norm1(v);
+      if (lower <= oldLower) break;
+      oldSign = sign;
+      oldVmax = vmax;
+      oldLower = lower;
+    }
+    S alt = S(1);
+    for (int i = 0; i < 12; ++i) {
+      v(i) = alt * (S(1) + S(i) / S(11));
+      alt = -alt;
+    }
+    solve(v);
+    const S inv = std::max<S>(lower, S(2) * norm1(v) / S(36));
+    return inv == S(0) ? S(0) : S(S(1) / inv / l1);
   }
   /// b ← M⁻¹ b (forward substitution with the unit lower factor, then back substitution).
   void solve(Eigen::Matrix<S, 12, 1>& b) const {
     S y[12];
     for (int i = 0; i < 12; ++i) {
       S v = b(perm[i]);
-      for (int k = 0; k < i; ++k) v -= a[i][k] * y[k];
+      for (int k = 0; k < i; ++k) v -= l[i][k] * y[k];
       y[i] = v;
     }
     for (int i = 11; i >= 0; --i) {
       S v = y[i];
       for (int k = i + 1; k < 12; ++k) v -= a[i][k] * b(k);
-      b(i) = v / a[i][i];
+      b(i) = v * rdiag[i];
     }
   }
 };
@@ -211,14 +287,16 @@ bool deflateExtraneous(Work24<S>& H, const M12<S>& A, const M12<S>& B, const M12
   const S thr2 = Tolerance<S>::epsilon();  // (√eps)²: pivots compared in squared modulus
   S first2 = S(0);
   int rank = 0;
+  // The pivot of step k + 1 is searched while step k updates the trailing block (same order,
+  // column by column, as a separate search: the same pivots, one pass less over the block).
+  int p = 0, q = 0;
+  S best = S(-1);
+  for (int j = 0; j < 12; ++j)
+    for (int i = 0; i < 12; ++i) {
+      const S m2 = zr(i, j) * zr(i, j) + zi(i, j) * zi(i, j);
+      if (m2 > best) best = m2, p = i, q = j;
+    }
   for (int k = 0; k < 12; ++k) {
-    int p = k, q = k;
-    S best = S(-1);
-    for (int j = k; j < 12; ++j)
-      for (int i = k; i < 12; ++i) {
-        const S m2 = zr(i, j) * zr(i, j) + zi(i, j) * zi(i, j);
-        if (m2 > best) best = m2, p = i, q = j;
-      }
     if (k == 0) first2 = best;
     if (!(best > thr2 * first2) || !(best > S(0))) break;
     zr.row(k).swap(zr.row(p));
@@ -227,15 +305,25 @@ bool deflateExtraneous(Work24<S>& H, const M12<S>& A, const M12<S>& B, const M12
     zi.col(k).swap(zi.col(q));
     std::swap(col[k], col[q]);
     const S pr = zr(k, k), pim = zi(k, k), inv = S(1) / best;  // 1 / pivot = conj(pivot) / |pivot|²
+    std::array<S, 12> fr, fi;
     for (int i = k + 1; i < 12; ++i) {
-      const S fr = (zr(i, k) * pr + zi(i, k) * pim) * inv, fi = (zi(i, k) * pr - zr(i, k) * pim) * inv;
-      for (int j = k + 1; j < 12; ++j) {
-        zr(i, j) -= fr * zr(k, j) - fi * zi(k, j);
-        zi(i, j) -= fr * zi(k, j) + fi * zr(k, j);
-      }
+      fr[i] = (zr(i, k) * pr + zi(i, k) * pim) * inv;
+      fi[i] = (zi(i, k) * pr - zr(i, k) * pim) * inv;
       zr(i, k) = zi(i, k) = S(0);
     }
     rank = k + 1;
+    best = S(-1);
+    p = q = k + 1;
+    for (int j = k + 1; j < 12; ++j) {
+      const S ur = zr(k, j), ui = zi(k, j);
+      for (int i = k + 1; i < 12; ++i) {
+        const S r = zr(i, j) - (fr[i] * ur - fi[i] * ui), m = zi(i, j) - (fr[i] * ui + fi[i] * ur);
+        zr(i, j) = r;
+        zi(i, j) = m;
+        const S m2 = r * r + m * m;
+        if (m2 > best) best = m2, p = i, q = j;
+      }
+    }
   }
   if (rank != 8) return false;
   Eigen::Matrix<S, 24, 8> W;  // columns 2j, 2j + 1: (Re w, −Im w) for w = v_j and i v_j
@@ -446,16 +534,33 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
                         toString(toDouble(out.qRank), 3) +
                         "): special geometry, θ1 and θ2 are not determined by elimination");
   }
-  const Eigen::Matrix<S, 14, 14> Hq = qr.householderQ();
-  const Eigen::Matrix<S, 6, 14> N = Hq.rightCols(6).transpose();
+  // Only the last 6 columns of Q (the reflectors applied to [0; I6]), and coefficient-based
+  // products: Eigen's blocked GEMM packs its operands for these 6×14×9 products (~11k
+  // instructions a pose), the full 14×14 Q costs twice the 14×6 one.
+  Eigen::Matrix<S, 14, 6> Q6 = Eigen::Matrix<S, 14, 6>::Zero();
+  Q6.template bottomRows<6>().setIdentity();
+  // Reflector k of the QR: I − τ_k v vᵀ with v = (1, matrixQR(k+1.., k)) on rows k..13; applied
+  // here by hand (Eigen's HouseholderSequence on these dynamic-length blocks cost ~4k instructions
+  // per application, this ~0.3k).
+  const M14x8<S>& qrm = qr.matrixQR();
+  auto reflect = [&](int k, S* x) {  // x ← (I − τ_k v vᵀ) x, x of length 14
+    S d = x[k];
+    for (int i = k + 1; i < 14; ++i) d += qrm(i, k) * x[i];
+    d *= qr.hCoeffs()(k);
+    x[k] -= d;
+    for (int i = k + 1; i < 14; ++i) x[i] -= d * qrm(i, k);
+  };
+  for (int j = 0; j < 6; ++j)
+    for (int k = 7; k >= 0; --k) reflect(k, &Q6(0, j));
+  const Eigen::Matrix<S, 6, 14> N = Q6.transpose();
   std::array<M6x9<S>, 3> Sig;
-  for (int k = 0; k < 3; ++k) Sig[k] = N * P[k];
+  for (int k = 0; k < 3; ++k) Sig[k].noalias() = N.lazyProduct(P[k]);
 
   // θ3 = β + ψ, x3 = tan(ψ/2): M(x3) = (Σ1 − Σc')x3² + 2Σs'x3 + (Σ1 + Σc'). Pick β so that the
   // leading matrix is invertible (β = 0 unless θ3 = π is, nearly, a root: the root at infinity).
   M12<S> A, B, C;
   S rc = S(-1), beta = S(0);
-  Eigen::PartialPivLU<M12<S>> luA;
+  Lu12<S> luA;
   auto build = [&](const S& b) {
     const S cb = cos(b), sb = sin(b);
     const M6x9<S> Sc = Sig[1] * cb + Sig[2] * sb, Ss = Sig[2] * cb - Sig[1] * sb;
@@ -472,8 +577,10 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
         C.row(r) /= m;
       }
     }
-    luA.compute(A);
-    return S(luA.rcond());
+    luA.factor(A);
+    S l1 = S(0);
+    for (int c = 0; c < 12; ++c) l1 = std::max<S>(l1, A.col(c).cwiseAbs().sum());
+    return luA.rcond(l1);
   };
   rc = build(S(0));
   const S rcGood = Tolerance<S>::precision(2);
@@ -503,25 +610,16 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
   if (rc > Tolerance<S>::rank()) {
     Work24<S> H = Work24<S>::Zero();
     H.template topRightCorner<12, 12>().setIdentity();
-    {  // −A⁻¹[C B], column by column with the fixed-size LU (Eigen's blocked solve with 24
-       // right-hand sides costs ~50k instructions here); Eigen's LU when a pivot is exactly zero
-      const Lu12<S> lu12(A);
-      if (lu12.ok) {
-        Eigen::Matrix<S, 12, 1> y;
-        for (int j = 0; j < 12; ++j) {
-          y = C.col(j);
-          lu12.solve(y);
-          H.col(j).template segment<12>(12) = -y;
-          y = B.col(j);
-          lu12.solve(y);
-          H.col(12 + j).template segment<12>(12) = -y;
-        }
-      } else {
-        Eigen::Matrix<S, 12, 24> CB;
-        CB << C, B;
-        const Eigen::Matrix<S, 12, 24> X = luA.solve(CB);
-        H.template bottomLeftCorner<12, 12>() = -X.template leftCols<12>();
-        H.template bottomRightCorner<12, 12>() = -X.template rightCols<12>();
+    {  // −A⁻¹[C B], column by column with the LU of A factored for its rcond (rc > 0: no zero
+       // pivot; Eigen's blocked solve with 24 right-hand sides costs ~50k instructions here)
+      Eigen::Matrix<S, 12, 1> y;
+      for (int j = 0; j < 12; ++j) {
+        y = C.col(j);
+        luA.solve(y);
+        H.col(j).template segment<12>(12) = -y;
+        y = B.col(j);
+        luA.solve(y);
+        H.col(12 + j).template segment<12>(12) = -y;
       }
     }
     // The 8 extraneous eigenvalues x3 = ±i are deflated first (the QR iteration on 16×16 costs
@@ -653,7 +751,20 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
     for (int i4 = 0; i4 < 3; ++i4)
       for (int i5 = 0; i5 < 3; ++i5) m45(i4 * 3 + i5) = t4[i4] * t5[i5];
     const V14<S> rhs = (P[0] + P[1] * c3 + P[2] * s3) * m45;
-    const Eigen::Matrix<S, 8, 1> u = qr.solve(rhs);
+    // u = qr.solve(rhs) (Eigen's ColPivHouseholderQR::solve, by hand: Qᵀ rhs with the first
+    // nonzeroPivots reflectors, R⁻¹ on those rows, the column permutation; the rest zero).
+    Eigen::Matrix<S, 8, 1> u = Eigen::Matrix<S, 8, 1>::Zero();
+    {
+      V14<S> c = rhs;
+      const int nz = int(qr.nonzeroPivots());
+      for (int k = 0; k < nz; ++k) reflect(k, c.data());
+      for (int i = nz - 1; i >= 0; --i) {
+        S v = c(i);
+        for (int k = i + 1; k < nz; ++k) v -= qrm(i, k) * c(k);
+        c(i) = v / qrm(i, i);
+      }
+      for (int i = 0; i < nz; ++i) u(qr.colsPermutation().indices()(i)) = c(i);
+    }
     // u = (c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2)
     phi[0] = atan2(u(5), u(2));
     phi[1] = atan2(u(1), u(0));
@@ -742,8 +853,10 @@ S polishLinks(const std::array<Link<S>, 6>& L, const std::array<S, 6>& offset, c
   if (res <= stop) return res;
   S err = e.squaredNorm();
   for (int it = 0; it < iterations; ++it) {
-    const Vec6<S> dq = Eigen::PartialPivLU<M6>(J).solve(e);
-    if (!allFinite(dq)) break;
+    // One right-hand side: Gaussian elimination with partial pivoting in place (Eigen's
+    // PartialPivLU of this 6×6 costs ~7k instructions a posture, this ~1k); a zero pivot stops.
+    Vec6<S> dq = e;
+    if (!(detail::smallSolveInPlace<S, 6>(J, dq) > S(0)) || !allFinite(dq)) break;
     std::array<S, 6> qn = q;
     for (int i = 0; i < 6; ++i) qn[i] += dq(i);
     M6 Jn;

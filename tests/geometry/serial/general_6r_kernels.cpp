@@ -1,0 +1,53 @@
+// The general-6R solver's hand-written numerical kernels (general_6r_impl.hpp, written for speed)
+// against Eigen's: the 12×12 LU's reciprocal condition estimate against PartialPivLU::rcond()
+// (the same Hager–Higham algorithm, so equal up to the rounding of two factorisations), and its
+// solves against PartialPivLU::solve, on random, nearly rank-deficient and badly row-scaled
+// matrices (fixed seed).
+#include "soma/geometry/serial/general_6r_impl.hpp"
+
+#include "support/scalars.hpp"
+
+namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
+
+using namespace soma;
+
+TEST_CASE("general 6R kernels: Lu12 rcond and solves agree with Eigen's PartialPivLU", "[sixr][kernels]") {
+  auto& g = test::rng(20261206);
+  using M = detail6r::M12<double>;
+  using V = Eigen::Matrix<double, 12, 1>;
+  for (int t = 0; t < 600; ++t) {
+    M a;
+    for (int i = 0; i < 12; ++i)
+      for (int j = 0; j < 12; ++j) a(i, j) = test::uniform<double>(g);
+    if (t % 3 == 1) a.col(3) = 2 * a.col(4) + 1e-9 * double(1 + t % 7) * a.col(5);  // nearly singular
+    if (t % 3 == 2) a.row(7) *= 1e-6;                                             // badly scaled
+    const Eigen::PartialPivLU<M> ref(a);
+    const detail6r::Lu12<double> lu(a);
+    REQUIRE(lu.ok);
+    double l1 = 0;
+    for (int c = 0; c < 12; ++c) l1 = std::max(l1, a.col(c).cwiseAbs().sum());
+    // The estimator takes the same branches on the same pivots; its value is a norm of computed
+    // solves, whose relative error is ≲ κ·n²·eps (κ = 1/rcond, n = 12, and this LU multiplies by
+    // reciprocal pivots where Eigen divides): |Δrcond| ≲ rcond·κ·144 eps = 144 eps. The solver's
+    // decisions (rcond against Tolerance::precision(2) and Tolerance::rank()) must agree.
+    INFO("matrix " << t);
+    const double rc = ref.rcond(), mine = lu.rcond(l1);
+    CHECK(std::abs(mine - rc) <= 144 * Tolerance<double>::epsilon());
+    CHECK((mine > Tolerance<double>::precision(2)) == (rc > Tolerance<double>::precision(2)));
+    CHECK((mine > Tolerance<double>::rank()) == (rc > Tolerance<double>::rank()));
+    // Solves compared where the system is well posed (rcond > √eps); nearer singular both answers
+    // are rounding, and the reference's LU of aᵀ may meet an exactly zero pivot.
+    if (!(ref.rcond() > Tolerance<double>::sqrtEpsilon())) continue;
+    const V b = test::uniformVec<double, 12>(g);
+    V x = b, y = b;
+    lu.solve(x);
+    lu.solveTransposed(y);
+    const double kappa = 1 / ref.rcond();  // forward error ≤ κ × backward error (12² eps)
+    const double tol = kappa * 144 * Tolerance<double>::epsilon();
+    CHECK((x - ref.solve(b)).norm() <= tol * x.norm());
+    const V yRef = Eigen::PartialPivLU<M>(M(a.transpose())).solve(b);
+    CHECK((y - yRef).norm() <= tol * y.norm());
+  }
+}
+
+}  // namespace SOMA_UNITY_ID
