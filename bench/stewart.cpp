@@ -5,8 +5,9 @@
 // posture above the base defines the leg lengths). The start system (a total-degree homotopy on
 // a complex platform, once per process) is solved before timing. papers/benchmarks/stewart.md
 // records the numbers. Goal from issues 8 and 21: ≤ 1 ms median for all 40 in double — the fast
-// double tracker (BM_stewart_fast, solveStewartForward's default in double) beside the general
-// tracker (BM_stewart_homotopy) on the same pool.
+// double tracker (BM_stewart_fast, solveStewartForward's default in double, with the widest kernel
+// the CPU has; BM_stewart_fast_kernel with it capped to AVX2 and to the portable kernel) beside the
+// general tracker (BM_stewart_homotopy) on the same pool.
 #include "soma/geometry/parallel/stewart.hpp"
 
 #include <benchmark/benchmark.h>
@@ -14,6 +15,7 @@
 #include <time.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <random>
 #include <vector>
 
@@ -83,8 +85,20 @@ template <class S> void stewartBench(benchmark::State& st, StewartTracking track
   st.counters["p90_cpu_ms"] = 1e3 * cpu[(cpu.size() * 9) / 10];
 }
 template <class S> void BM_stewart_homotopy(benchmark::State& st) { stewartBench<S>(st, StewartTracking::General); }
-template <class S> void BM_stewart_fast(benchmark::State& st) { stewartBench<S>(st, StewartTracking::Auto); }
+template <class S> void BM_stewart_fast(benchmark::State& st) {
+  stewartBench<S>(st, StewartTracking::Auto);
+  st.SetLabel(stewartFastKernel());  // the widest kernel this CPU has
+}
+/// The fast tracker with its kernel capped (SOMA_STEWART_KERNEL): the kernels side by side.
+void BM_stewart_fast_kernel(benchmark::State& st, const char* cap) {
+  setenv("SOMA_STEWART_KERNEL", cap, 1);
+  stewartBench<double>(st, StewartTracking::Auto);
+  st.SetLabel(stewartFastKernel());
+  unsetenv("SOMA_STEWART_KERNEL");
+}
 BENCHMARK_TEMPLATE(BM_stewart_fast, double)->Unit(benchmark::kMillisecond)->Iterations(kPool)->Repetitions(3)->ReportAggregatesOnly(true);
+BENCHMARK_CAPTURE(BM_stewart_fast_kernel, avx2, "avx2")->Unit(benchmark::kMillisecond)->Iterations(kPool)->Repetitions(3)->ReportAggregatesOnly(true);
+BENCHMARK_CAPTURE(BM_stewart_fast_kernel, portable, "portable")->Unit(benchmark::kMillisecond)->Iterations(kPool)->Repetitions(3)->ReportAggregatesOnly(true);
 BENCHMARK_TEMPLATE(BM_stewart_homotopy, double)->Unit(benchmark::kMillisecond)->Iterations(kPool)->Repetitions(3)->ReportAggregatesOnly(true);
 BENCHMARK_TEMPLATE(BM_stewart_homotopy, long double)->Unit(benchmark::kMillisecond)->Iterations(8)->Repetitions(1);
 

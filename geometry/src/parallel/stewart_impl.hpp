@@ -685,10 +685,12 @@ inline bool fastTrack(const ParameterHomotopy<double>& hom, const std::vector<X<
   const F::Settings o;
   int failed = 0, infinite = 0, coincide = 0;
   ends.clear();
-  for (const auto& s : starts) {
-    F::V8 x0;
-    for (int k = 0; k < 8; ++k) x0[k] = F::cx(s[k]);
-    const F::Path r = F::track(H, x0, o);
+  std::vector<F::V8> x0(starts.size());
+  for (std::size_t i = 0; i < starts.size(); ++i)
+    for (int k = 0; k < 8; ++k) x0[i][k] = F::cx(starts[i][k]);
+  std::vector<F::Path> paths;
+  F::trackAll(H, x0, o, paths);
+  for (const F::Path& r : paths) {
     steps += r.steps;
     X<double> x;
     for (int k = 0; k < 8; ++k) x[k] = {r.x[k].re, r.x[k].im};

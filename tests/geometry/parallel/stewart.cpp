@@ -8,6 +8,10 @@
 #include "soma/algebra/study_parameters.hpp"
 #include "support/scalars.hpp"
 
+#include <cstdlib>
+#include <string>
+#include <vector>
+
 namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
 
 using namespace soma;
@@ -128,60 +132,77 @@ TEST_CASE("Stewart forward kinematics in double: 40 on random platforms, the def
 
 // Issue 21: the fast double tracker (geometry/src/parallel/stewart_fast_tracker.hpp) against the
 // general tracker, two independent trackers (Hermite predictor + simplified Newton vs RK4 + Newton)
-// on the same homotopy; both endpoints polished by Newton at τ = 1 to the rounding floor.
+// on the same homotopy; both endpoints polished by Newton at τ = 1 to the rounding floor. Every kernel
+// of the fast tracker this CPU runs (stewart_fast_lanes.hpp: portable, and AVX2 / AVX-512 where the
+// CPU has them), each on the same 12 platforms.
 TEST_CASE("Stewart fast double tracker: 40 distinct, the defining posture, the general tracker's solution set",
           "[stewart]") {
   using namespace soma;
+  std::vector<std::string> kernels{"portable"};
+#if defined(__x86_64__)
+  const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  const bool avx512 = avx2 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+                      __builtin_cpu_supports("avx512vl");
+  if (avx2) kernels.push_back("avx2");
+  CHECK(std::string(stewartFastKernel()) == (avx512 ? "avx512" : avx2 ? "avx2" : "portable"));  // the widest
+#endif
+  const std::size_t widest = kernels.size();
   auto& g = test::rng(2121);
   for (int trial = 0; trial < 12; ++trial) {
     SE3<double> pose;
     const auto P = randomPlatform<double>(g, &pose);
-    const auto s = solveStewartForward<double>(P);
     const auto ref = solveStewartForward<double>(P, StewartTracking::General);
-    INFO("trial " << trial);
-    CHECK(s.tracker == "fast");
-    CHECK(ref.tracker == "general");
-    CHECK(s.notes.size() == ref.notes.size());  // no fallback note
-    REQUIRE(s.distinctCount() == 40);
-    CHECK(s.complexCount() == 40);
-    CHECK(s.paths_tracked == 40);
-    // Finite, and pairwise apart: the smallest distance between two of the 40 (each scaled so that
-    // its largest coordinate is 1) is far above the matching tolerance below.
-    double sep = 1e300;
-    for (std::size_t i = 0; i < 40; ++i) {
-      for (const auto& z : s.complex_solutions[i]) CHECK((std::isfinite(z.real()) && std::isfinite(z.imag())));
-      for (std::size_t j = i + 1; j < 40; ++j) {
-        double d = 0;
-        for (int k = 0; k < 8; ++k) d = std::max(d, std::abs(s.complex_solutions[i][k] - s.complex_solutions[j][k]));
-        sep = std::min(sep, d);
+    for (std::size_t kk = 0; kk <= widest; ++kk) {
+      // The capped kernels, then (kk == widest) the one Auto takes uncapped.
+      if (kk < widest) setenv("SOMA_STEWART_KERNEL", kernels[kk].c_str(), 1);
+      else unsetenv("SOMA_STEWART_KERNEL");
+      if (kk < widest) CHECK(std::string(stewartFastKernel()) == kernels[kk]);
+      const auto s = solveStewartForward<double>(P);
+      INFO("trial " << trial << ", kernel " << stewartFastKernel());
+      CHECK(s.tracker == "fast");
+      CHECK(ref.tracker == "general");
+      CHECK(s.notes.size() == ref.notes.size());  // no fallback note
+      REQUIRE(s.distinctCount() == 40);
+      CHECK(s.complexCount() == 40);
+      CHECK(s.paths_tracked == 40);
+      // Finite, and pairwise apart: the smallest distance between two of the 40 (each scaled so that
+      // its largest coordinate is 1) is far above the matching tolerance below.
+      double sep = 1e300;
+      for (std::size_t i = 0; i < 40; ++i) {
+        for (const auto& z : s.complex_solutions[i]) CHECK((std::isfinite(z.real()) && std::isfinite(z.imag())));
+        for (std::size_t j = i + 1; j < 40; ++j) {
+          double d = 0;
+          for (int k = 0; k < 8; ++k) d = std::max(d, std::abs(s.complex_solutions[i][k] - s.complex_solutions[j][k]));
+          sep = std::min(sep, d);
+        }
       }
-    }
-    CHECK(sep > 1e-4);
-    // The same 40 as the general tracker, one to one: both are Newton-polished at τ = 1 to
-    // ~64 eps · cond, so they agree to far below √eps (checked) and far below the separation.
-    std::vector<bool> used(40, false);
-    double worst = 0;
-    for (const auto& x : s.complex_solutions) {
-      int best = -1;
-      double bd = 1e300;
-      for (std::size_t j = 0; j < ref.complex_solutions.size(); ++j) {
-        double d = 0;
-        for (int k = 0; k < 8; ++k) d = std::max(d, std::abs(x[k] - ref.complex_solutions[j][k]));
-        if (d < bd) bd = d, best = static_cast<int>(j);
+      CHECK(sep > 1e-4);
+      // The same 40 as the general tracker, one to one: both are Newton-polished at τ = 1 to
+      // ~64 eps · cond, so they agree to far below √eps (checked) and far below the separation.
+      std::vector<bool> used(40, false);
+      double worst = 0;
+      for (const auto& x : s.complex_solutions) {
+        int best = -1;
+        double bd = 1e300;
+        for (std::size_t j = 0; j < ref.complex_solutions.size(); ++j) {
+          double d = 0;
+          for (int k = 0; k < 8; ++k) d = std::max(d, std::abs(x[k] - ref.complex_solutions[j][k]));
+          if (d < bd) bd = d, best = static_cast<int>(j);
+        }
+        REQUIRE(best >= 0);
+        CHECK(!used[static_cast<std::size_t>(best)]);
+        used[static_cast<std::size_t>(best)] = true;
+        worst = std::max(worst, bd);
       }
-      REQUIRE(best >= 0);
-      CHECK(!used[static_cast<std::size_t>(best)]);
-      used[static_cast<std::size_t>(best)] = true;
-      worst = std::max(worst, bd);
+      CHECK(worst <= Tolerance<double>::sqrtEpsilon());
+      CHECK(s.real_count == ref.real_count);
+      REQUIRE(s.count() == ref.count());
+      for (std::size_t k = 0; k < s.count(); ++k)
+        CHECK((s.postures[k].matrix() - ref.postures[k].matrix()).norm() <= Tolerance<double>::sqrtEpsilon());
+      CHECK(nearest<double>(s, pose) <= 1e-10);
+      CHECK(s.worstResidual() <= Tolerance<double>::identity(64));
+      checkConjugatePairs<double>(s);
     }
-    CHECK(worst <= Tolerance<double>::sqrtEpsilon());
-    CHECK(s.real_count == ref.real_count);
-    REQUIRE(s.count() == ref.count());
-    for (std::size_t k = 0; k < s.count(); ++k)
-      CHECK((s.postures[k].matrix() - ref.postures[k].matrix()).norm() <= Tolerance<double>::sqrtEpsilon());
-    CHECK(nearest<double>(s, pose) <= 1e-10);
-    CHECK(s.worstResidual() <= Tolerance<double>::identity(64));
-    checkConjugatePairs<double>(s);
   }
 }
 

@@ -10,6 +10,7 @@
 #include "soma/algebra/errors.hpp"
 #include "support/scalars.hpp"
 
+#include <cstdlib>
 #include <Eigen/SVD>
 
 namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
@@ -293,6 +294,12 @@ TEST_CASE("Stewart at the boundary of the assembly space: one posture of multipl
     bool fellBack = false;
     for (const auto& n : s.notes) fellBack = fellBack || n.find("re-solved by the general tracker") != std::string::npos;
     CHECK(fellBack);
+    // The fast tracker's portable kernel (the one a CPU without AVX2 takes) falls back there too.
+    setenv("SOMA_STEWART_KERNEL", "portable", 1);
+    const auto sp = solveStewartForward<double>(P);
+    unsetenv("SOMA_STEWART_KERNEL");
+    CHECK(sp.tracker == "general");
+    CHECK(sp.distinctCount() == 39);
     int doubles = 0;
     std::size_t at = 0;
     for (std::size_t k = 0; k < s.count(); ++k)
@@ -313,6 +320,11 @@ TEST_CASE("Stewart at the boundary of the assembly space: one posture of multipl
   CHECK(s.complexCount() == 40);
   CHECK(s.distinctCount() == 40);
   CHECK(s.tracker == "fast");  // the other side: 40 distinct, no fallback
+  setenv("SOMA_STEWART_KERNEL", "portable", 1);
+  const auto sp = solveStewartForward<double>(P);
+  unsetenv("SOMA_STEWART_KERNEL");
+  CHECK(sp.distinctCount() == 40);
+  CHECK(sp.tracker == "fast");
 }
 
 }  // namespace SOMA_UNITY_ID

@@ -186,6 +186,12 @@ template <class S> const std::vector<StudyPointC<S>>& stewartStartSolutions();
 ///            together); slow in float128/mpfr.
 enum class StewartTracking { Auto, General, Fine };
 
+/// The fast tracker's kernel that StewartTracking::Auto runs now: the widest this CPU has, "avx512"
+/// (eight paths per AVX-512 register), "avx2" (four per AVX2 register; both with fused multiply–adds)
+/// or "portable" (four per pack, the default instruction set), chosen at run time; the environment
+/// variable SOMA_STEWART_KERNEL=portable|avx2 caps it (the cross-check of the kernels; read per call).
+const char* stewartFastKernel();
+
 /// All postures of a platform by the parameter homotopy from the start platform.
 /// GF §11.5.4, GF-11.5.4-stewart-forty
 template <class S>
