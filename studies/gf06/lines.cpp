@@ -4,7 +4,7 @@
 // double and cast (the same lines on every rung).
 #include "gf06/common.hpp"
 
-#include <Eigen/SVD>
+#include "soma/algebra/small_linalg.hpp"
 
 namespace soma::studies::gf06::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
@@ -329,13 +329,15 @@ template <class S> void invariantForms(Context& c) {
       for (int i = 0; i < 36; ++i) a(k * 36 + i, u) = r(i / 6, i % 6);
     }
   }
-  Eigen::JacobiSVD<MatXS> svd(a, Eigen::ComputeFullV);
-  const auto sv = svd.singularValues();
+  // Singular values by soma's one-sided Jacobi (small_linalg.hpp; Eigen's JacobiSVD for five
+  // scalars would cost this file several times its compile time), descending.
+  const std::vector<S> sv = detail::smallSingularValues<S>(a);
+  const int n = int(sv.size());
   int nullity = 0;
-  for (int i = 0; i < sv.size(); ++i)
-    if (sv(i) <= Tolerance<S>::rank() * sv(0) * S(64)) ++nullity;
+  for (int i = 0; i < n; ++i)
+    if (sv[std::size_t(i)] <= Tolerance<S>::rank() * sv[0] * S(64)) ++nullity;
   c.checkEqual("dimension of invariant symmetric forms (null space, 3 random g)", 2, nullity);
-  const S gap = sv(sv.size() - 3) / sv(0);
+  const S gap = sv[std::size_t(n - 3)] / sv[0];
   c.recordIn("gap: smallest non-null singular value / largest", "> 1e-6", io::numberText(gap), gap, tenTo<S>(-6), gap > tenTo<S>(-6));
   const Vec3<S> tw = rv<S>(g), tv = rv<S>(g);
   const Mat6<S> ad = SE3Tangent<S>(six(tw, tv)).exp().adjoint();
