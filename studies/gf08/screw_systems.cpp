@@ -3,6 +3,7 @@
 // completion and isotropy algebras, the Gibson–Hunt normal forms (Tables 8.1, 8.2) and their
 // identification, the invariants of §8.4 with errata E8.2–E8.11, union and intersection (§8.5),
 // and the regulus figure of an IA₁ 3-system.
+#include "soma/algebra/small_linalg.hpp"
 #include "soma/geometry/screws/identification.hpp"
 #include "soma/render/render.hpp"
 #include "soma/studies/study.hpp"
@@ -61,6 +62,12 @@ template <class S> ScrewMatX<S> cols(std::initializer_list<Vec6<S>> c) {
 template <class D> typename D::Scalar maxAbs(const Eigen::MatrixBase<D>& m) {
   return m.size() ? typename D::Scalar(m.cwiseAbs().maxCoeff()) : typename D::Scalar(0);
 }
+/// Determinant of a small matrix by soma's elimination (small_linalg.hpp): Eigen's LU for five
+/// scalars would double this file's compile time.
+template <class D> typename D::Scalar detS(const Eigen::MatrixBase<D>& m) {
+  using S = typename D::Scalar;
+  return detail::smallDeterminant<S>(detail::SmallMat<S>(m));
+}
 template <class S> ScrewMatX<S> gram(const ScrewMatX<S>& s, const Mat6<S>& q) { return s.transpose() * q * s; }
 /// The n-th compound (∧ⁿ) of a 6×6 matrix: minors in the lexicographic order of wedge().
 template <class S> ScrewMatX<S> compound(const Mat6<S>& a, int n) {
@@ -81,7 +88,7 @@ template <class S> ScrewMatX<S> compound(const Mat6<S>& a, int n) {
       ScrewMatX<S> m(n, n);
       for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) m(i, j) = a(sets[r][i], sets[k][j]);
-      c(r, k) = m.determinant();
+      c(r, k) = detS(m);
     }
   return c;
 }
@@ -138,7 +145,7 @@ template <class S> void grassmannian(Context& c) {
   for (int n = 1; n <= 5; ++n) {
     const MX s = randomGenerators<S>(n, g), m = randomGL<S>(n, g);
     const auto w = wedge<S>(s), wm = wedge<S>(MX(s * m));
-    worstM = std::max(worstM, (wm - w * m.determinant()).cwiseAbs().maxCoeff() / w.cwiseAbs().maxCoeff());
+    worstM = std::max(worstM, (wm - w * detS(m)).cwiseAbs().maxCoeff() / w.cwiseAbs().maxCoeff());
     const SE3d x = SE3d::Random(g);
     const auto wa = wedge<S>(MX(x.adjoint() * s));
     worstAd = std::max(worstAd, (wa - compound<S>(x.adjoint(), n) * w).cwiseAbs().maxCoeff());
@@ -567,7 +574,7 @@ template <class S> void alphaBeta(Context& c) {
     Eigen::Matrix<S, 3, 6> a;
     a << Mat3<S>::Identity() - pl.m, Mat3<S>::Identity() + pl.m;
     c.checkResidual<S>(screwSystemTypeName(pl.row.t) + " satisfies (I − M)ω + (I + M)v = 0", maxAbs(MX(a * nf)), kTol);
-    c.checkEqual("… rank(I + M)", pl.rank, Eigen::FullPivLU<Mat3<S>>(Mat3<S>::Identity() + pl.m).rank());
+    c.checkEqual("… rank(I + M)", pl.rank, detail::smallNumericalRank<S>(MX(Mat3<S>::Identity() + pl.m)));
   }
 }
 
@@ -615,7 +622,7 @@ template <class S> Inv2<S> inv2(const ScrewMatX<S>& s) {
   GF08_SCALAR_NAMES;
   const MX y0 = gram(s, kleinForm<S>()), yi = gram(s, infinityForm<S>());
   // det(αΥ₀ + βΥ∞) = α² i₁ + αβ i₂ + β² i₃
-  const S i1 = y0.determinant(), i3 = yi.determinant();
+  const S i1 = detS(y0), i3 = detS(yi);
   const S i2 = y0(0, 0) * yi(1, 1) + yi(0, 0) * y0(1, 1) - 2 * y0(0, 1) * yi(0, 1);
   return {i1, i2, i3};
 }
@@ -633,7 +640,7 @@ template <class S> void invariants2(Context& c) {
   const MX m = randomGL<S>(2, g);
   const SE3d x = SE3d::Random(g);
   const Inv2<S> bm = inv2<S>(MX(x.adjoint() * s * m));
-  const S d2 = m.determinant() * m.determinant();
+  const S d2 = detS(m) * detS(m);
   c.checkResidual<S>("i₁, i₂, i₃ scale by det(M)² under a basis change and are Ad-invariant",
                   std::max({abs(bm.i1 - d2 * a.i1), abs(bm.i2 - d2 * a.i2), abs(bm.i3 - d2 * a.i3)}), kTol * 64);
 }
@@ -656,7 +663,7 @@ template <class S> void table83(Context& c) {
   auto i5 = [](const MX& s) {
     const M6 A = s.col(0) * s.col(1).transpose() - s.col(1) * s.col(0).transpose();
     // f(λ, μ) = −λ⁶ − i₁λ⁴ − i₄λ³μ − i₅λ²μ²; at λ = 1: f(1, μ) = −1 − i₁ − i₄μ − i₅μ² (exact quadratic in μ).
-    auto f = [&](S mu) { return (A - kleinForm<S>() - mu * infinityForm<S>()).determinant(); };
+    auto f = [&](S mu) { return detS(M6(A - kleinForm<S>() - mu * infinityForm<S>())); };
     return -(f(1) + f(-1) - 2 * f(0)) / 2;  // exact: the printed monomials are all there is
   };
   const MX n0 = nfS<S>({T::IIA0_2, {}});
@@ -671,8 +678,8 @@ template <class S> void table83(Context& c) {
   const MX sm = s * m;
   const M6 A = s.col(0) * s.col(1).transpose() - s.col(1) * s.col(0).transpose();
   const M6 Am = sm.col(0) * sm.col(1).transpose() - sm.col(1) * sm.col(0).transpose();
-  c.checkResidual<S>("A' = det(M) A", maxAbs(MX(Am - m.determinant() * A)), kTol * 16);
-  c.checkPrintedFails<S>("A' = det(M)² A", "E8.3", maxAbs(MX(Am - m.determinant() * m.determinant() * A)), kTol * 16);
+  c.checkResidual<S>("A' = det(M) A", maxAbs(MX(Am - detS(m) * A)), kTol * 16);
+  c.checkPrintedFails<S>("A' = det(M)² A", "E8.3", maxAbs(MX(Am - detS(m) * detS(m) * A)), kTol * 16);
   // IA moduli: roots of i₃x² + i₂x + i₁ = identification's pitches (posed, random basis).
   const MX posed = SE3d::Random(g).adjoint() * nfS<S>({T::IA_2, {pa, pb}}) * randomGL<S>(2, g);
   const Inv2<S> a = inv2<S>(posed);
@@ -748,12 +755,12 @@ template <class S> Inv3<S> inv3(const ScrewMatX<S>& s) {
     for (int k = 0; k < 3; ++k) {
       MX m = a;
       m.col(k) = b.col(k);
-      sum += m.determinant();
+      sum += detS(m);
     }
     return sum;
   };
   // det(αΥ∞ + βΥ₀) = α³ detΥ∞ + α²β Θ + αβ² Φ + β³ detΥ₀
-  return {y0.determinant(), mixed(y0, yi), mixed(yi, y0), yi.determinant(),
+  return {detS(y0), mixed(y0, yi), mixed(yi, y0), detS(yi),
           reciprocalProduct<S>(s.col(0), screwBracket<S>(s.col(1), s.col(2)))};
 }
 
@@ -787,8 +794,8 @@ template <class S> void table84(Context& c) {
   }
   auto ranks = [](const RowS<S>& r) {
     const MX nf = nfS<S>(r);
-    return std::to_string(Eigen::FullPivLU<MX>(gram(nf, kleinForm<S>())).rank()) + "/" +
-           std::to_string(Eigen::FullPivLU<MX>(gram(nf, infinityForm<S>())).rank());
+    return std::to_string(detail::smallNumericalRank<S>(gram(nf, kleinForm<S>()))) + "/" +
+           std::to_string(detail::smallNumericalRank<S>(gram(nf, infinityForm<S>())));
   };
   c.checkEqual("rank Υ₀ / rank Υ∞ of IC(p≠0)", "2/1", ranks({T::ICp_3, {p}}));
   c.checkEqual("rank Υ₀ / rank Υ∞ of IC⁰", "2/1", ranks({T::IC0_3, {}}));
@@ -870,7 +877,7 @@ template <class S> Eigen::Matrix<S, Eigen::Dynamic, 1> shuffle(const ScrewMatX<S
     m.rightCols(k) = z;
     MX remaining(6, out);
     for (int i = 0; i < out; ++i) remaining.col(i) = s.col(rest[i]);
-    const VecX term = ((inv % 2) ? -1.0 : 1.0) * m.determinant() *
+    const VecX term = ((inv % 2) ? -1.0 : 1.0) * detS(m) *
                                  (out > 0 ? wedge<S>(remaining) : VecX::Ones(1));
     if (first) { sum = term; first = false; } else sum += term;
     int i = r - 1;
