@@ -2,6 +2,7 @@
 // reciprocal-screw inverse Jacobian of a 6R arm, Grassmannians. Every study runs in the asked scalar
 // (--scalar); the figure of GF-6.6-linear-complex is drawn in double (soma::render).
 #include "gf06/common.hpp"
+#include "soma/algebra/small_linalg.hpp"
 
 namespace soma::studies::gf06::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
@@ -158,7 +159,12 @@ template <class S> void inverseJacobian(Context& c) {
       for (int m = 0; m < 6; ++m)
         if (i != m) recip = max(recip, S(abs(reciprocalProduct(z[i], Vec6<S>(j.col(m)))) / (z[i].norm() * j.col(m).norm())));
     const Mat6<S> w = inverseJacobianFromReciprocals(j, z);
-    const Mat6<S> jinv = j.inverse();
+    Mat6<S> jinv;  // J⁻¹ column by column by soma's elimination (small_linalg.hpp), the LU reference
+    for (int col = 0; col < 6; ++col) {
+      Vec6<S> e = Vec6<S>::Unit(col);
+      detail::smallSolveInPlace<S, 6>(j, e);
+      jinv.col(col) = e;
+    }
     wj = max(wj, S((w * j - Mat6<S>::Identity()).norm()));
     vsNum = max(vsNum, S((w - jinv).norm() / jinv.norm()));
     kappa = max(kappa, S(j.norm() * jinv.norm()));
