@@ -63,12 +63,10 @@ foreach(scalar IN LISTS SOMA_SCALARS)
 endforeach()
 
 # Concepts (their NAMEs) instantiated for double only in this build: empty (the whole ladder). A
-# build that needs only the readers may list the concepts they call in no scalar but double (the
-# general-6R, closed-form IK and dynamics solvers; the scene reader's rigid bodies build
-# SpatialInertia<S> in every scalar, so `spatial_inertia` is a concept of its own) to save their
-# ladder; the `fuzz` preset did until its sanitized tests grew to the serial and CLI tests, which
-# call them in every scalar. A target that needs one of them in another scalar then fails to link,
-# naming the symbol.
+# build that needs only some callers may list the concepts they call in no scalar but double to save
+# their ladder: the `fuzz` preset lists those that neither its sanitized tests nor `soma` call in
+# another scalar (CMakePresets.json; scripts/test.sh says which and why). A target that needs one of
+# them in another scalar then fails to link, naming the symbol.
 set(SOMA_INSTANTIATE_DOUBLE_ONLY "" CACHE STRING
     "Concepts (soma_instantiate NAMEs) instantiated for double only (the fuzz preset)")
 

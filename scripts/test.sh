@@ -31,35 +31,41 @@ echo "soma benchmarks: compiled in $(( $(date +%s) - tests_done )) s"
 # the ~12 min budget. Without SOMA_INSTANTIATE_DOUBLE_ONLY the build needed 96 objects instead of 69
 # (the dynamics ladder alone is 28 TUs).
 # The sanitized tests (SOMA_SANITIZE_TESTS, CTest areas) are the readers' (io), algebra's, the line
-# geometry's and the serial robots' (geometry/serial: the fuzz preset instantiates the general-6R and
-# closed-form ladders at -O0 for them). SOMA_SANITIZE_EXCLUDE leaves out, by CTest regex, the five
-# self-motion tests (131-412 s each at -O0 under ASan, mpfr the longest).
-# The CLI contract tests (area `cli`: every `soma` command's exit code, message and output on a
-# sanitized `soma` built with SOMA_CLI_STUDIES=OFF) pass sanitized too (2026-12-04: 305 serial and
-# CLI tests, 0 reports, 89 s of wall), but not in CI's 45 minutes: `soma` needs the dynamics ladder
-# (the preset builds it for double only) and its own libraries, 543 s of CPU more, and the clean-clone
-# run that had them was stopped 31 min in, at 130 of its 237 fuzz-build steps (projected ~50 min). Run them so (tests/fuzz/README.md):
-#   SOMA_SANITIZE_TESTS="io algebra geometry/lines geometry/serial cli" bash scripts/test.sh
-# (with `cli` among the areas the fuzz build is configured with the whole ladder)
-# where the default exclusions also leave out the Stewart CLI tests (~8 s each: the 128-path start
-# system of every process at -O1 under ASan; the platform reader is fuzzed) and the two mpirun tests
-# (Open MPI's dlopen'd components leak at exit, unloaded before LeakSanitizer can name them). Leaks
-# of Mesa's off-screen renderer are suppressed (tests/fuzz/lsan.supp, set by the fuzz test preset).
-# Cost measured 2026-12-04 (this 2-core machine, CCACHE_DISABLE=1): the cold fuzz build of the
-# harnesses, test_io, test_algebra, test_geometry_lines, test_geometry_serial, soma and test_cli with
-# the whole ladder was 2,230 s of CPU (237 steps; with helpers' builds alongside); without soma and
-# test_cli ~1,690 s, and less again without the dynamics ladder.
-# This phase as CI runs it (the default areas), on a clean clone with a cold cache and nothing else
-# running (2026-12-04, CCACHE_DISABLE=1): 952 s of wall (1,866 s CPU): built in 729 s, the corpus
-# replays and the 593 sanitized tests in 138 s (0 reports), fuzzed in 85 s.
+# geometry's, the serial robots' (geometry/serial) and the CLI contract tests (cli: every `soma`
+# command's exit code, message and output, on a sanitized `soma` built without the studies,
+# SOMA_CLI_STUDIES=OFF). The preset instantiates for double only the concepts that neither these tests
+# nor `soma` call in another scalar (SOMA_INSTANTIATE_DOUBLE_ONLY in CMakePresets.json: the tree and
+# constrained dynamics, the dynamics models, statics, the Riemannian controllers and metrics, planar
+# kinematics, the Study-quadric ladder); the link of `soma` and the tests is the proof that nothing
+# else is needed (with fewer, it names the missing symbol: the scene outputs call serial and Clifford
+# dynamics and screw-system identification in every scalar, the cusp search escalates to float128 and
+# mpfr). Asking for another area (e.g. geometry/dynamics) configures the whole ladder.
+# SOMA_SANITIZE_EXCLUDE leaves out, by CTest regex:
+# - the five self-motion tests (131-412 s each at -O0 under ASan, mpfr the longest);
+# - the Stewart CLI tests that solve an ordinary platform (each builds the 128-path start system at
+#   -O1 under ASan: ~6 s of CPU, ~100 s for the 17; measured 2026-12-04, all pass sanitized); the
+#   Stewart refusals (bad files, unknown method, --complex without the homotopy, collinear joints,
+#   the platform scaled by 1e200) run, and the platform reader is fuzzed;
+# - the two mpirun tests (Open MPI's dlopen'd components leak at exit, unloaded before LeakSanitizer
+#   can name them).
+# Leaks of Mesa's off-screen renderer are suppressed (tests/fuzz/lsan.supp, set by the fuzz test preset).
+# Cost measured 2026-12-04 on this 2-core machine (loaded by four other builds: CPU times): the fuzz
+# build of `soma` and test_cli on top of the readers' and tests' objects, 126 + 35 steps; the 191 CLI
+# contract tests 99 s of CPU (0 reports), the 27 Stewart CLI tests 166 s of CPU (0 reports).
+# Before 2026-12-04 the CLI tests needed the whole ladder (2,230 s of CPU cold, projected ~50 min
+# for CI), so they ran on request only.
 if [ "${SOMA_SANITIZE:-1}" != 0 ]; then
   fuzz_start=$(date +%s)
-  sanitize_tests=${SOMA_SANITIZE_TESTS:-io algebra geometry/lines geometry/serial}
-  sanitize_exclude=${SOMA_SANITIZE_EXCLUDE:-self-motion answers a continuum|mpirun|cli: ?stewart|stewart_irregular|stewart_leg|hostile platform}
+  default_tests="io algebra geometry/lines geometry/serial cli"
+  sanitize_tests=${SOMA_SANITIZE_TESTS:-$default_tests}
+  stewart_solves='cli: ?stewart( --png|: (general|--json|float128|Dietmaier|6-3|6-4|impossible|at the boundary|--complex (--json|text)|a general|a double root|standard planar))|stewart_irregular|stewart_leg'
+  sanitize_exclude=${SOMA_SANITIZE_EXCLUDE:-self-motion answers a continuum|mpirun|$stewart_solves}
   targets=(soma_fuzz)
   for area in $sanitize_tests; do targets+=("test_${area//\//_}"); done
   fuzz_args=()
-  case " ${sanitize_tests} " in *" cli "*) fuzz_args+=(-DSOMA_INSTANTIATE_DOUBLE_ONLY=) ;; esac
+  for area in $sanitize_tests; do
+    case " $default_tests " in *" $area "*) ;; *) fuzz_args=(-DSOMA_INSTANTIATE_DOUBLE_ONLY=) ;; esac
+  done
   cmake --preset fuzz "${fuzz_args[@]}" >/dev/null
   cmake --build --preset fuzz --target "${targets[@]}"
   fuzz_built=$(date +%s)
