@@ -95,6 +95,29 @@ template <class S> SerialDynamics<S> castRobot(const SerialDynamics<double>& r) 
   }
   return SerialDynamics<S>(s, l, scalarCast<S>(r.gravity()));
 }
+/// A robot drawn in double (randomRobot) and cast to S with its joint screws made unit in S: a
+/// revolute axis ω/|ω| with v less its ω component (pitch 0), a slide v/|v|. castRobot keeps the
+/// double's |ω| = 1 ± 1e-16, which mpfr rejects (Tolerance::input) and which turns θ + 200π into a
+/// rotation that differs by 200π·1e-16.
+template <class S> SerialDynamics<S> castRobotUnit(const SerialDynamics<double>& r) {
+  std::vector<SE3Tangent<S>> s;
+  std::vector<SpatialInertia<S>> l;
+  for (int i = 0; i < r.dof(); ++i) {
+    const SE3Tangent<double>& x = r.homeScrews()[std::size_t(i)];
+    Vec3<S> w = castMatrix<S>(x.ang()), v = castMatrix<S>(x.lin());
+    if (w.squaredNorm() > S(0)) {
+      w /= sqrt(w.squaredNorm());
+      v -= w.dot(v) * w;
+    } else {
+      v /= sqrt(v.squaredNorm());
+    }
+    s.emplace_back(w, v);
+    const SpatialInertia<double>& b = r.homeLinks()[std::size_t(i)];
+    const Mat3<S> I = castMatrix<S>(b.inertiaAboutCentre());
+    l.emplace_back(scalarCast<S>(b.mass()), castMatrix<S>(b.centreOfMass()), Mat3<S>((I + I.transpose()) / S(2)));
+  }
+  return SerialDynamics<S>(s, l, scalarCast<S>(r.gravity()));
+}
 inline DV rjoints(std::mt19937_64& g, int n, double lo = -1.5, double hi = 1.5) {
   DV v(n);
   for (int i = 0; i < n; ++i) v(i) = uni(g, lo, hi);
@@ -163,7 +186,14 @@ template <class S> S maxOf(const S& a, const S& b) {
   if (!isFinite(b)) return b;
   return a < b ? b : a;
 }
-template <class S> S maxAbsOf(const DynMatrix<S>& m) { return m.cwiseAbs().maxCoeff(); }
+template <class D> typename D::Scalar maxAbsOf(const Eigen::MatrixBase<D>& m) { return m.cwiseAbs().maxCoeff(); }
+/// Joint values drawn in double (rjoints) and cast to S.
+template <class S> DynVector<S> rjointsS(std::mt19937_64& g, int n, double lo = -1.5, double hi = 1.5) {
+  const DynVector<double> v = rjoints(g, n, lo, hi);
+  DynVector<S> o(n);
+  for (int i = 0; i < n; ++i) o(i) = scalarCast<S>(v(i));
+  return o;
+}
 template <class S> S tol(int ulps = 64) { return Tolerance<S>::identity(ulps); }
 
 /// The PUMA 560 (standard DH) with the Armstrong–Khatib–Burdick inertias of puma560_dynamics.json.
@@ -172,5 +202,11 @@ inline std::filesystem::path robotsDir() {
 }
 inline std::vector<SpatialInertia<double>> pumaLinks() { return io::readLinkInertias(robotsDir() / "puma560_dynamics.json"); }
 inline SerialDynamics<double> puma(double grav = 9.81) { return serialDynamicsOf(puma560Robot<double>(), pumaLinks(), grav); }
+/// The same PUMA in S (the inertias read in double and cast), g = 9.81 m/s² as S rounds 981/100.
+template <class S> SerialDynamics<S> pumaIn() {
+  std::vector<SpatialInertia<S>> links;
+  for (const auto& b : pumaLinks()) links.push_back(castBody<S>(b));
+  return serialDynamicsOf(puma560Robot<S>(), links, S(981) / S(100));
+}
 
 }  // namespace soma::studies::gf13

@@ -127,7 +127,7 @@ template <class S> void transformation(Context& ctx) {
     const SpatialInertia<S> b = castBody<S>(randomBody(g));
     const SE3<S> x = SE3<S>::Random(g);
     const M6 Np = coadjointTransform(x, b.matrix());
-    direct = maxOf(direct, S(maxAbsOf<S>(DMS(Np - b.transformed(x).matrix())) / maxAbsOf<S>(DMS(Np))));
+    direct = maxOf(direct, S(maxAbsOf(DMS(Np - b.transformed(x).matrix())) / maxAbsOf(DMS(Np))));
     const V6 s = rv6<S>(g), s2 = x.adjoint() * s;
     ke = maxOf(ke, S(abs(s2.dot(Np * s2) - s.dot(b.matrix() * s)) / s.dot(b.matrix() * s)));
     // pure translation, c.o.m. at the origin: N' = [[I − mT², mT], [−mT, m]]
@@ -137,7 +137,7 @@ template <class S> void transformation(Context& ctx) {
     M6 want;
     want << b0.inertiaAboutCentre() - b.mass() * T * T, b.mass() * T, -b.mass() * T, b.mass() * M3::Identity();
     const M6 got = coadjointTransform(SE3<S>(SO3<S>(), tv), b0.matrix());
-    par = maxOf(par, S(maxAbsOf<S>(DMS(got - want)) / maxAbsOf<S>(DMS(want))));
+    par = maxOf(par, S(maxAbsOf(DMS(got - want)) / maxAbsOf(DMS(want))));
   }
   ctx.checkResidual("H⁻ᵀNH⁻¹ = the body moved directly (c' = Rc + t, I_c' = R I_c Rᵀ), 100 random (relative, 32 ε)", direct, tol<S>(32));
   ctx.checkResidual("E_K invariant: s'ᵀN's' = sᵀNs", ke, tol<S>(32));
@@ -168,7 +168,7 @@ template <class S> void diagonalisation(Context& ctx) {
     const M6 D = coadjointTransform(frame.inverse(), N);
     M6 off = D;
     off.diagonal().setZero();
-    worst = maxOf(worst, S(maxAbsOf<S>(DynMatrix<S>(off)) / maxAbsOf<S>(DynMatrix<S>(D))));
+    worst = maxOf(worst, S(maxAbsOf(DynMatrix<S>(off)) / maxAbsOf(DynMatrix<S>(D))));
   }
   ctx.checkResidual("c = vee(N₁₂/m) (100 random bodies, 32 ε)", cerr, tol<S>(32));
   ctx.checkResidual("H⁻ᵀNH⁻¹ diagonal = diag(d₁, d₂, d₃, m, m, m) in the principal frame (off-diagonal, relative, 32 ε)", worst,
@@ -190,11 +190,11 @@ template <class S> void conjugate(Context& ctx) {
     M6 O = Eigen::HouseholderQR<M6>(X).householderQ();
     if (O.determinant() < 0) O.col(0) *= -1;  // det −1 in even dimension has eigenvalue +1: I − M singular
     const M6 M = Nih * O * Nh;
-    group = maxOf(group, S(maxAbsOf<S>(DMS(M.transpose() * N * M - N)) / maxAbsOf<S>(DMS(N))));
+    group = maxOf(group, S(maxAbsOf(DMS(M.transpose() * N * M - N)) / maxAbsOf(DMS(N))));
     // (I − M) s₁ = (I + M) s₂: s₁, s₂ conjugate
     const V6 s2 = rv6<S>(g);
     const V6 s1 = (M6::Identity() - M).partialPivLu().solve((M6::Identity() + M) * s2);
-    conj = maxOf(conj, S(abs(s1.dot(N * s2)) / (s1.norm() * s2.norm() * maxAbsOf<S>(DMS(N)))));
+    conj = maxOf(conj, S(abs(s1.dot(N * s2)) / (s1.norm() * s2.norm() * maxAbsOf(DMS(N)))));
     // Gram–Schmidt in the N inner product: six mutually conjugate screws
     std::vector<V6> b;
     for (int i = 0; i < 6; ++i) {
@@ -315,7 +315,13 @@ template <class S> void principal(Context& ctx) {
   ctx.checkResidual("principal screws mutually reciprocal: s_jᵀQ₀s_i = 0 (corrected, erratum 13)", recip, eig);
   ctx.checkResidual("and conjugate: s_jᵀNs_i = 0", conj, eig);
   ctx.checkResidual("{s, Ns} = 0 for a principal screw", self, eig);
-  ctx.checkPrintedFails("0 = (λ_i − λ_j) s_iᵀQ₀s_i (line 7737)", "13", printedMin, eig);
+  // The printed s_iᵀQ₀s_i = 2p_i|ω|² is O(0.1) for these bodies: an erratum must miss by 1000× the
+  // rounding bound, which float's (1000 · 4096 ε = 0.49) does not allow; there it is skipped, with a note.
+  if (S(Context::kPrintedMissFactor) * eig < S(1) / S(100))
+    ctx.checkPrintedFails("0 = (λ_i − λ_j) s_iᵀQ₀s_i (line 7737)", "13", printedMin, eig);
+  else
+    ctx.note("Skipped in this scalar: the printed-formula check of line 7737 (its residual " + toString(toDouble(printedMin), 3) +
+             " cannot be 1000× the rounding bound 4096 ε = " + toString(toDouble(eig), 3) + ").");
   ctx.note("Line 7737 prints s_iᵀQ₀s_i; that is 2p_i|ω|², never zero for a principal screw (the smallest "
            "|s_iᵀQ₀s_i| over 300 unit principal screws is " + toString(toDouble(printedMin), 3) + "). With s_jᵀQ₀s_i it holds.");
 }
