@@ -17,6 +17,15 @@ inline constexpr const char* kChapter = "GF 12 — Statics";
 template <class S> S uni(std::mt19937_64& g, double lo = -1, double hi = 1) {
   return scalarCast<S>(std::uniform_real_distribution<double>(lo, hi)(g));
 }
+template <class S> Vec3<S> rv3(std::mt19937_64& g, double lo = -1, double hi = 1) {
+  const S x = uni<S>(g, lo, hi), y = uni<S>(g, lo, hi), z = uni<S>(g, lo, hi);
+  return Vec3<S>(x, y, z);
+}
+template <class S> Vec6<S> rv6(std::mt19937_64& g) {
+  Vec6<S> v;
+  for (int i = 0; i < 6; ++i) v(i) = uni<S>(g);
+  return v;
+}
 /// n/d in S: an input such as 0.3 written exactly as the scalar rounds it, not as a double.
 template <class S> S frac(long n, long d = 1) { return S(n) / S(d); }
 /// max(a, b), propagating NaN (a comparison-based max would silently skip it).

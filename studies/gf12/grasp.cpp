@@ -25,15 +25,6 @@ using std::sin;
 using std::sqrt;
 
 template <class S> S tol(int ulps = 64) { return Tolerance<S>::identity(ulps); }
-template <class S> Vec3<S> rv3(std::mt19937_64& g, double lo = -1, double hi = 1) {
-  const S x = uni<S>(g, lo, hi), y = uni<S>(g, lo, hi), z = uni<S>(g, lo, hi);
-  return Vec3<S>(x, y, z);
-}
-template <class S> Vec6<S> rv6(std::mt19937_64& g) {
-  Vec6<S> v;
-  for (int i = 0; i < 6; ++i) v(i) = uni<S>(g);
-  return v;
-}
 /// A surface parameter scale: 3.14159 (not π: the samples stay off the seam), exactly as S rounds it.
 template <class S> S nearPi() { return frac<S>(314159, 100000); }
 

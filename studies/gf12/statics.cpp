@@ -21,15 +21,6 @@ namespace {
 using std::abs;
 
 template <class S> S tol(int ulps = 64) { return Tolerance<S>::identity(ulps); }
-template <class S> Vec3<S> rv3(std::mt19937_64& g) {
-  const S x = uni<S>(g), y = uni<S>(g), z = uni<S>(g);
-  return Vec3<S>(x, y, z);
-}
-template <class S> Vec6<S> rv6(std::mt19937_64& g) {
-  Vec6<S> v;
-  for (int i = 0; i < 6; ++i) v(i) = uni<S>(g);
-  return v;
-}
 template <class S, class M> long long detailRank(const M& m) { return wrenchSpan<S>(WrenchSet<S>(m)).rank; }
 /// The displacement screw of the tool between two poses, to first order: log(T₁ T₀⁻¹) (spatial).
 template <class S> Vec6<S> spatialDisplacement(const SE3<S>& t0, const SE3<S>& t1) {
