@@ -1,5 +1,6 @@
 #pragma once
-// Shared helpers for the GF chapter 13 studies (double): screw algebra in the book's conventions,
+// Shared helpers for the GF chapter 13 studies (double, and templated on S for the studies that run
+// in the asked scalar): screw algebra in the book's conventions,
 // random bodies and robots with fixed seeds, finite differences, the PUMA 560 with the inertias of
 // studies/robots/puma560_dynamics.json, and "the printed formula fails" checks.
 #include "soma/geometry/dynamics/joint_integrators.hpp"
@@ -94,6 +95,29 @@ template <class S> SerialDynamics<S> castRobot(const SerialDynamics<double>& r) 
   }
   return SerialDynamics<S>(s, l, scalarCast<S>(r.gravity()));
 }
+/// A robot drawn in double (randomRobot) and cast to S with its joint screws made unit in S: a
+/// revolute axis ω/|ω| with v less its ω component (pitch 0), a slide v/|v|. castRobot keeps the
+/// double's |ω| = 1 ± 1e-16, which mpfr rejects (Tolerance::input) and which turns θ + 200π into a
+/// rotation that differs by 200π·1e-16.
+template <class S> SerialDynamics<S> castRobotUnit(const SerialDynamics<double>& r) {
+  std::vector<SE3Tangent<S>> s;
+  std::vector<SpatialInertia<S>> l;
+  for (int i = 0; i < r.dof(); ++i) {
+    const SE3Tangent<double>& x = r.homeScrews()[std::size_t(i)];
+    Vec3<S> w = castMatrix<S>(x.ang()), v = castMatrix<S>(x.lin());
+    if (w.squaredNorm() > S(0)) {
+      w /= sqrt(w.squaredNorm());
+      v -= w.dot(v) * w;
+    } else {
+      v /= sqrt(v.squaredNorm());
+    }
+    s.emplace_back(w, v);
+    const SpatialInertia<double>& b = r.homeLinks()[std::size_t(i)];
+    const Mat3<S> I = castMatrix<S>(b.inertiaAboutCentre());
+    l.emplace_back(scalarCast<S>(b.mass()), castMatrix<S>(b.centreOfMass()), Mat3<S>((I + I.transpose()) / S(2)));
+  }
+  return SerialDynamics<S>(s, l, scalarCast<S>(r.gravity()));
+}
 inline DV rjoints(std::mt19937_64& g, int n, double lo = -1.5, double hi = 1.5) {
   DV v(n);
   for (int i = 0; i < n; ++i) v(i) = uni(g, lo, hi);
@@ -122,11 +146,67 @@ template <class F> auto dmat(F&& f, double d = 1e-3) {
 inline double maxAbs(const DV& v) { return v.cwiseAbs().maxCoeff(); }
 inline double maxAbs(const DM& v) { return v.cwiseAbs().maxCoeff(); }
 
+// ---- The same helpers templated on the working scalar S (the studies that run in the asked scalar):
+// draws in double cast to S (the same inputs on every rung of the ladder).
+template <class S> S uni(std::mt19937_64& g, double lo = -1, double hi = 1) {
+  return scalarCast<S>(std::uniform_real_distribution<double>(lo, hi)(g));
+}
+template <class S> Vec3<S> rv3(std::mt19937_64& g, double lo = -1, double hi = 1) {
+  const S x = uni<S>(g, lo, hi), y = uni<S>(g, lo, hi), z = uni<S>(g, lo, hi);
+  return Vec3<S>(x, y, z);
+}
+template <class S> Vec6<S> rv6(std::mt19937_64& g) {
+  Vec6<S> v;
+  for (int i = 0; i < 6; ++i) v(i) = uni<S>(g);
+  return v;
+}
+template <class S> Mat6<S> adm(const Vec6<S>& s) { return SE3Tangent<S>(s).ad(); }
+template <class S> Vec6<S> br(const Vec6<S>& a, const Vec6<S>& b) { return adm(a) * b; }
+template <class S> Vec6<S> coad(const Vec6<S>& s, const Vec6<S>& P) { return -adm(s).transpose() * P; }
+template <class S> Mat6<S> q0() {
+  Mat6<S> Q0 = Mat6<S>::Zero();
+  Q0.template topRightCorner<3, 3>().setIdentity();
+  Q0.template bottomLeftCorner<3, 3>().setIdentity();
+  return Q0;
+}
+template <class S> Vec6<S> lineScrew(const Vec3<S>& w, const Vec3<S>& r, const S& pitch) {
+  Vec6<S> s;
+  s << w, r.cross(w) + pitch * w;
+  return s;
+}
+/// A body drawn in double (randomBody) and cast to S, its inertia symmetrised in S.
+template <class S> SpatialInertia<S> castBody(const SpatialInertia<double>& b) {
+  const Mat3<S> I = castMatrix<S>(b.inertiaAboutCentre());
+  return SpatialInertia<S>(scalarCast<S>(b.mass()), castMatrix<S>(b.centreOfMass()), Mat3<S>((I + I.transpose()) / S(2)));
+}
+template <class S> S frac(long n, long d = 1) { return S(n) / S(d); }
+/// max(a, b), propagating NaN (a comparison-based max would silently skip it).
+template <class S> S maxOf(const S& a, const S& b) {
+  if (!isFinite(a)) return a;
+  if (!isFinite(b)) return b;
+  return a < b ? b : a;
+}
+template <class D> typename D::Scalar maxAbsOf(const Eigen::MatrixBase<D>& m) { return m.cwiseAbs().maxCoeff(); }
+/// Joint values drawn in double (rjoints) and cast to S.
+template <class S> DynVector<S> rjointsS(std::mt19937_64& g, int n, double lo = -1.5, double hi = 1.5) {
+  const DynVector<double> v = rjoints(g, n, lo, hi);
+  DynVector<S> o(n);
+  for (int i = 0; i < n; ++i) o(i) = scalarCast<S>(v(i));
+  return o;
+}
+template <class S> S tol(int ulps = 64) { return Tolerance<S>::identity(ulps); }
+
 /// The PUMA 560 (standard DH) with the Armstrong–Khatib–Burdick inertias of puma560_dynamics.json.
 inline std::filesystem::path robotsDir() {
   return sourceRoot() / "studies" / "robots";
 }
 inline std::vector<SpatialInertia<double>> pumaLinks() { return io::readLinkInertias(robotsDir() / "puma560_dynamics.json"); }
 inline SerialDynamics<double> puma(double grav = 9.81) { return serialDynamicsOf(puma560Robot<double>(), pumaLinks(), grav); }
+/// The same PUMA in S (the inertias read in double and cast), g = 9.81 m/s² as S rounds 981/100.
+template <class S> SerialDynamics<S> pumaIn() {
+  std::vector<SpatialInertia<S>> links;
+  for (const auto& b : pumaLinks()) links.push_back(castBody<S>(b));
+  return serialDynamicsOf(puma560Robot<S>(), links, S(981) / S(100));
+}
 
 }  // namespace soma::studies::gf13
