@@ -25,6 +25,8 @@ using DM = DgMatrix<double>;
 using SM = ScrewMatrix<double>;
 using std::abs;
 
+/// n/d in S (exact for the small fractions the studies use as inputs).
+template <class S> S frac(long n, long d = 1) { return S(n) / S(d); }
 inline double uni(std::mt19937_64& g, double lo = -1, double hi = 1) {
   return std::uniform_real_distribution<double>(lo, hi)(g);
 }
