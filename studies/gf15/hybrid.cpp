@@ -48,7 +48,7 @@ template <class S> void natural(Context& ctx) {
   M6 Ssel = M6::Zero();
   Ssel(2, 2) = Ssel(5, 5) = 1;
   const M6 H = shiftX<S>(frac<S>(2, 5));  // the same peg described from an origin moved 0.4 along x
-  const M6 Hi = H.inverse();
+  const M6 Hi = shiftX<S>(frac<S>(-2, 5));  // the exact inverse of a translation's adjoint
   const V6 err = (V6() << frac<S>(1, 100), frac<S>(-1, 50), frac<S>(3, 100), frac<S>(1, 500), frac<S>(1, 1000), frac<S>(-1, 250)).finished();  // a twist error in frame 1
   // the action of S in frame 2, mapped back to frame 1, vs the action in frame 1
   const V6 act1 = Ssel * err, act2back = H * (Ssel * (Hi * err));
@@ -208,7 +208,8 @@ template <class S> void secondFundamental(Context& ctx) {
   const HybridProjectors<S> p = n6Projectors<S>(Z, N);
   const V3 w(frac<S>(4, 5), frac<S>(-1, 2), frac<S>(11, 10));
   const M3 Io = body.inertiaAboutOrigin();
-  const V3 wd = Io.ldlt().solve(V3(-w.cross(Io * w)));  // free rotation about the pin
+  V3 wd = -w.cross(Io * w);  // free rotation about the pin: I_o ω̇ = −ω × I_o ω
+  detail::smallSolveInPlace<S, 3>(Io, wd);
   V6 V, Vd;
   V << w, V3::Zero();
   Vd << wd, V3::Zero();
@@ -241,10 +242,16 @@ template <class S> void n6Orthonormal(Context& ctx) {
     DM Z(6, n);
     for (int i = 0; i < n; ++i) Z.col(i) = V6(castMatrix<S>(rv6(g)));
     const HybridProjectors<S> p = n6Projectors<S>(Z, N);
+    M6 Ninv;  // N₆⁻¹ column by column (soma's Gaussian elimination, not Eigen's LU: compile cost)
+    for (int j = 0; j < 6; ++j) {
+      V6 e = V6::Unit(j);
+      detail::smallSolveInPlace<S, 6>(N, e);
+      Ninv.col(j) = e;
+    }
     DM full(6, 6);
     full << p.A, p.Y.transpose();
     e1 = std::max(e1, mx<S>(DM(full.transpose() * N * full - DM::Identity(6, 6))));
-    e2 = std::max(e2, mx<S>(DM(p.X * p.X.transpose() * N.inverse() - N * p.Y.transpose() * p.Y)));
+    e2 = std::max(e2, mx<S>(DM(p.X * p.X.transpose() * Ninv - N * p.Y.transpose() * p.Y)));
     const M6 AB = p.A * p.A.transpose() * N, XY = N * p.Y.transpose() * p.Y;
     e3 = std::max({e3, mx<S>(DM(AB * AB - AB)), mx<S>(DM(XY * XY - XY))});
     e4 = std::max(e4, mx<S>(DM(AB + XY.transpose() - M6::Identity())));
@@ -287,7 +294,9 @@ template <class S> void multipliers(Context& ctx) {
   const V6 V = p.A * rvecS<S>(g, 3);
   // V̇ = A a with a from the constrained equations Aᵀ(N V̇ + {V, N V}) = 0
   const DM AtNA = p.A.transpose() * N * p.A;
-  const DV a = AtNA.ldlt().solve(DV(-(p.A.transpose() * coadjointBrace<S>(V, V6(N * V)))));
+  V3 a3 = -(p.A.transpose() * coadjointBrace<S>(V, V6(N * V)));
+  detail::smallSolveInPlace<S, 3>(M3(AtNA), a3);
+  const DV a = a3;
   const V6 Vd = p.A * a;
   const V6 total = rigidBodyWrench<S>(N, V, Vd);
   const DV lam = constraintMultipliers<S>(p, N, V, Vd);
@@ -335,7 +344,8 @@ template <class S> void hybridLaw(Context& ctx) {
   const V6 qe = hybridVelocityError<S>(p, N, qd, q6);
   const V6 qee = hybridAccelerationError<S>(p, N, qdd, q6dd, qe);
   // the same computed in a second frame (random rigid change H): torques identical, screws transform
-  const M6 H = SE3<S>(rotationS<S>(g), V3(castMatrix<S>(rv3(g)))).adjoint(), Hi = H.inverse();
+  const SE3<S> Hs(rotationS<S>(g), V3(castMatrix<S>(rv3(g))));
+  const M6 H = Hs.adjoint(), Hi = Hs.inverse().adjoint();
   const M6 N2 = H.transpose() * N * H;
   const HybridProjectors<S> p2 = n6Projectors<S>(DM(Hi * Z), N2);
   const DV tauF2 = forceControlTorque<S>(p2, V6(H.transpose() * Wd), DM(Hi * J));
