@@ -138,6 +138,17 @@ template <class S> S cond(const DgMatrix<S>& a) {
 // rounding per step.
 template <class S> S rk4Tol(int steps, double method = 1e-9, int ulpsPerStep = 64) { return S(method) + S(steps) * tol<S>(ulpsPerStep); }
 
+/// The inverse of a 6×6 matrix column by column (soma's Gaussian elimination; Eigen's LU in five scalars
+/// costs compile time).
+template <class S> Mat6<S> inverse6(const Mat6<S>& a) {
+  Mat6<S> r;
+  for (int j = 0; j < 6; ++j) {
+    Vec6<S> e = Vec6<S>::Unit(j);
+    detail::smallSolveInPlace<S, 6>(a, e);
+    r.col(j) = e;
+  }
+  return r;
+}
 /// randomRobot's draws with the robot built in S (unit axes normalised, inertias symmetrised in S; g = 981/100).
 template <class S> SerialDynamics<S> randomRobotS(std::mt19937_64& g, int n = 6) {
   std::vector<SE3Tangent<S>> s;

@@ -242,12 +242,7 @@ template <class S> void n6Orthonormal(Context& ctx) {
     DM Z(6, n);
     for (int i = 0; i < n; ++i) Z.col(i) = V6(castMatrix<S>(rv6(g)));
     const HybridProjectors<S> p = n6Projectors<S>(Z, N);
-    M6 Ninv;  // N₆⁻¹ column by column (soma's Gaussian elimination, not Eigen's LU: compile cost)
-    for (int j = 0; j < 6; ++j) {
-      V6 e = V6::Unit(j);
-      detail::smallSolveInPlace<S, 6>(N, e);
-      Ninv.col(j) = e;
-    }
+    const M6 Ninv = inverse6<S>(N);  // soma's Gaussian elimination, not Eigen's LU (compile cost)
     DM full(6, 6);
     full << p.A, p.Y.transpose();
     e1 = std::max(e1, mx<S>(DM(full.transpose() * N * full - DM::Identity(6, 6))));

@@ -183,7 +183,7 @@ template <class S> void pullbackMetric(Context& ctx) {
   // ad(s_i(0)); then it equals ad(s_i(θ)) (conjugation), consistent with the corrected vector form.
   SE3<S> G = SE3<S>::Identity();
   for (int k = 0; k < 3; ++k) G = G.compose(SE3Tangent<S>(V6(th(k) * geo.homeScrews()[std::size_t(k)])).exp());
-  const M6 conj = G.adjoint() * SE3Tangent<S>(geo.homeScrews()[3]).ad() * G.adjoint().inverse();
+  const M6 conj = G.adjoint() * SE3Tangent<S>(geo.homeScrews()[3]).ad() * G.inverse().adjoint();
   // three exponentials and 6×6 products of unit-scale entries: 64 ε (1.4e-14; 1e-14 before)
   ctx.checkResidual("printed form in the ad representation: Ad·ad(s₄(0))·Ad⁻¹ = ad(s₄(θ)) (64 ε)",
                     mx<S>(M6(conj - SE3Tangent<S>(V6(J.col(3))).ad())), tol<S>(64));
@@ -320,7 +320,7 @@ template <class S> void christoffel(Context& ctx) {
       return DM(geo.pullbackMetric(a));
     }, fdStep<S>()));
   const DM Gm = geo.pullbackMetric(th);
-  const DM Gi = Gm.inverse();
+  const DM Gi = inverse6<S>(Mat6<S>(Gm));
   const S kappa = cond<S>(Gm);
   const auto book = geo.christoffelBook(th), printed = christoffelAsPrinted<S>(geo, th);
   const auto lc = geo.christoffelLeviCivita(th);
