@@ -38,11 +38,7 @@ template <class S> Mat6<S> shiftX(const S& r) { return SE3<S>(SO3<S>::Identity()
 template <class S> void natural(Context& ctx) {
   using V6 = Vec6<S>;
   using M6 = Mat6<S>;
-  using V3 = Vec3<S>;
-  using M3 = Mat3<S>;
-  using DV = DgVector<S>;
   using DM = DgMatrix<S>;
-  using SM = ScrewMatrix<S>;
   using std::abs;
   // Raibert–Craig: one selection matrix S = diag(0,0,1,0,0,1) used for twists AND (via I − S) wrenches.
   M6 Ssel = M6::Zero();
@@ -66,11 +62,7 @@ template <class S> void natural(Context& ctx) {
 template <class S> void dualBases(Context& ctx) {
   using V6 = Vec6<S>;
   using M6 = Mat6<S>;
-  using V3 = Vec3<S>;
-  using M3 = Mat3<S>;
-  using DV = DgVector<S>;
   using DM = DgMatrix<S>;
-  using SM = ScrewMatrix<S>;
   using std::abs;
   auto g = std::mt19937_64(1543);
   S idem = 0, dual = 0, comp = 0;
@@ -120,13 +112,8 @@ template <class S> void dualBases(Context& ctx) {
 }
 
 template <class S> void peg(Context& ctx) {
-  using V6 = Vec6<S>;
   using M6 = Mat6<S>;
-  using V3 = Vec3<S>;
-  using M3 = Mat3<S>;
-  using DV = DgVector<S>;
   using DM = DgMatrix<S>;
-  using SM = ScrewMatrix<S>;
   using std::abs;
   const HybridProjectors<S> p = dualBasisProjectors<S>(pegFreedoms<S>(), pegComplement<S>());
   DM B(2, 6);
@@ -148,11 +135,7 @@ template <class S> void peg(Context& ctx) {
 template <class S> void transformation(Context& ctx) {
   using V6 = Vec6<S>;
   using M6 = Mat6<S>;
-  using V3 = Vec3<S>;
-  using M3 = Mat3<S>;
-  using DV = DgVector<S>;
   using DM = DgMatrix<S>;
-  using SM = ScrewMatrix<S>;
   using std::abs;
   const S r = frac<S>(7, 10);
   const M6 H = shiftX<S>(r);
@@ -192,9 +175,7 @@ template <class S> void secondFundamental(Context& ctx) {
   using M6 = Mat6<S>;
   using V3 = Vec3<S>;
   using M3 = Mat3<S>;
-  using DV = DgVector<S>;
   using DM = DgMatrix<S>;
-  using SM = ScrewMatrix<S>;
   using std::abs;
   auto g = std::mt19937_64(1545);
   const S m = S(2);
@@ -226,11 +207,7 @@ template <class S> void secondFundamental(Context& ctx) {
 template <class S> void n6Orthonormal(Context& ctx) {
   using V6 = Vec6<S>;
   using M6 = Mat6<S>;
-  using V3 = Vec3<S>;
-  using M3 = Mat3<S>;
-  using DV = DgVector<S>;
   using DM = DgMatrix<S>;
-  using SM = ScrewMatrix<S>;
   using std::abs;
   auto g = std::mt19937_64(1546);
   S e1 = 0, e2 = 0, e3 = 0, e4 = 0;
@@ -276,7 +253,6 @@ template <class S> void multipliers(Context& ctx) {
   using M3 = Mat3<S>;
   using DV = DgVector<S>;
   using DM = DgMatrix<S>;
-  using SM = ScrewMatrix<S>;
   using std::abs;
   auto g = std::mt19937_64(1547);
   const SpatialInertia<S> body(frac<S>(3, 2), V3(frac<S>(1, 5), frac<S>(1, 10), frac<S>(-3, 10)), M3(V3(frac<S>(3, 10), frac<S>(2, 5), frac<S>(1, 2)).asDiagonal()));
