@@ -1,5 +1,6 @@
 #pragma once
-// Shared helpers for the GF chapter 14 studies (double; __float128 for reference differences):
+// Shared helpers for the GF chapter 14 studies (draws in double, cast to the study's scalar; __float128
+// for reference differences):
 // random trees, finite differences, "the printed formula fails" records, the example mechanisms.
 #include "soma/geometry/dynamics/biped_dynamics.hpp"
 #include "soma/geometry/dynamics/constrained_tree.hpp"
@@ -22,6 +23,8 @@ using DV = DynVector<double>;
 using DM = DynMatrix<double>;
 using Q = __float128;
 
+/// n/d in S (exact for the small fractions the studies use as inputs).
+template <class S> S frac(long n, long d = 1) { return S(n) / S(d); }
 inline double uni(std::mt19937_64& g, double lo = -1, double hi = 1) { return std::uniform_real_distribution<double>(lo, hi)(g); }
 inline V3 rv3(std::mt19937_64& g, double lo = -1, double hi = 1) { return V3(uni(g, lo, hi), uni(g, lo, hi), uni(g, lo, hi)); }
 inline V3 unit3(std::mt19937_64& g) {
@@ -41,8 +44,19 @@ inline SpatialInertia<double> randomBody(std::mt19937_64& g) {
   const Mat3<double> R = SO3<double>::Random(g).matrix();
   return SpatialInertia<double>(uni(g, 0.5, 3), rv3(g), Mat3<double>(R * V3(d(0) + d(1), d(1) + d(2), d(2) + d(0)).asDiagonal() * R.transpose()));
 }
+/// randomBody's draws (mass, centre, principal moments, axes) with the body built in S: its 6×6 matrix
+/// symmetrised in S (a double matrix cast to a wider S is symmetric only to double's rounding).
+template <class S> Mat6<S> randomBodyMatrix(std::mt19937_64& g) {
+  const V3 d(uni(g, 0.05, 0.5), uni(g, 0.05, 0.5), uni(g, 0.05, 0.5));
+  const Mat3<S> R = castMatrix<S>(Mat3<double>(SO3<double>::Random(g).matrix()));
+  const double m = uni(g, 0.5, 3);
+  const V3 c = rv3(g);
+  const Mat3<S> I = R * Vec3<S>(castMatrix<S>(V3(d(0) + d(1), d(1) + d(2), d(2) + d(0)))).asDiagonal() * R.transpose();
+  const Mat6<S> n = SpatialInertia<S>(S(m), castMatrix<S>(c), I).matrix();
+  return Mat6<S>((n + n.transpose()) / S(2));
+}
 /// A random tree with the given parents: revolute joints on random lines, random bodies, g along −z.
-template <class S = double> TreeDynamics<S> randomTree(std::mt19937_64& g, const std::vector<int>& parent, double grav = 9.81) {
+template <class S = double> TreeDynamics<S> randomTree(std::mt19937_64& g, const std::vector<int>& parent, const S& grav = frac<S>(981, 100)) {
   std::vector<Vec6<S>> s;
   std::vector<Mat6<S>> N;
   for (std::size_t i = 0; i < parent.size(); ++i) {
@@ -53,12 +67,11 @@ template <class S = double> TreeDynamics<S> randomTree(std::mt19937_64& g, const
     using std::sqrt;
     xs /= S(sqrt(S(xs.template head<3>().squaredNorm())));
     s.push_back(xs);
-    const M6 n = randomBody(g).matrix();
-    N.push_back(castMatrix<S>(M6((n + n.transpose()) / 2)));
+    N.push_back(randomBodyMatrix<S>(g));
   }
   return TreeDynamics<S>(TreeTopology(parent), s, N, Vec3<S>(S(0), S(0), S(-grav)));
 }
-template <class S> TreeDynamics<S> castTree(const TreeDynamics<double>& t) {
+template <class S, class T> TreeDynamics<S> castTree(const TreeDynamics<T>& t) {
   std::vector<Vec6<S>> s;
   std::vector<Mat6<S>> N;
   for (int i = 0; i < t.dof(); ++i) {
