@@ -49,9 +49,12 @@ echo "soma benchmarks: compiled in $(( $(date +%s) - tests_done )) s"
 # - the two mpirun tests (Open MPI's dlopen'd components leak at exit, unloaded before LeakSanitizer
 #   can name them).
 # Leaks of Mesa's off-screen renderer are suppressed (tests/fuzz/lsan.supp, set by the fuzz test preset).
-# Cost measured 2026-12-04 on this 2-core machine (loaded by four other builds: CPU times): the fuzz
-# build of `soma` and test_cli on top of the readers' and tests' objects, 126 + 35 steps; the 191 CLI
-# contract tests 99 s of CPU (0 reports), the 27 Stewart CLI tests 166 s of CPU (0 reports).
+# Cost measured 2026-12-04 on this 2-core machine (loaded by four other builds: CPU times): the 191 CLI
+# contract tests 99 s of CPU (0 reports), the 27 Stewart CLI tests 166 s of CPU (0 reports). This
+# phase cold on a clean clone (3cf99a7, CCACHE_DISABLE=1, /usr/bin/time): 194 build steps, the 808
+# corpus replays and sanitized tests (0 reports) and 20 s of fuzzing per harness (no finding): 2,658 s
+# of CPU (2,446 user + 212 sys) against 1,866 s for the phase without the CLI tests, so about 22 min
+# of wall on a quiet 2-core machine (the wall measured, 52 min, was shared with three other builds).
 # Before 2026-12-04 the CLI tests needed the whole ladder (2,230 s of CPU cold, projected ~50 min
 # for CI), so they ran on request only.
 if [ "${SOMA_SANITIZE:-1}" != 0 ]; then
