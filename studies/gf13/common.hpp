@@ -3,6 +3,7 @@
 // in the asked scalar): screw algebra in the book's conventions,
 // random bodies and robots with fixed seeds, finite differences, the PUMA 560 with the inertias of
 // studies/robots/puma560_dynamics.json, and "the printed formula fails" checks.
+#include "soma/studies/scalar_draws.hpp"
 #include "soma/geometry/dynamics/joint_integrators.hpp"
 #include "soma/geometry/dynamics/robot_dynamics.hpp"
 #include "soma/geometry/dynamics/serial_dynamics.hpp"
@@ -148,18 +149,11 @@ inline double maxAbs(const DM& v) { return v.cwiseAbs().maxCoeff(); }
 
 // ---- The same helpers templated on the working scalar S (the studies that run in the asked scalar):
 // draws in double cast to S (the same inputs on every rung of the ladder).
-template <class S> S uni(std::mt19937_64& g, double lo = -1, double hi = 1) {
-  return scalarCast<S>(std::uniform_real_distribution<double>(lo, hi)(g));
-}
-template <class S> Vec3<S> rv3(std::mt19937_64& g, double lo = -1, double hi = 1) {
-  const S x = uni<S>(g, lo, hi), y = uni<S>(g, lo, hi), z = uni<S>(g, lo, hi);
-  return Vec3<S>(x, y, z);
-}
-template <class S> Vec6<S> rv6(std::mt19937_64& g) {
-  Vec6<S> v;
-  for (int i = 0; i < 6; ++i) v(i) = uni<S>(g);
-  return v;
-}
+using draws::frac;
+using draws::maxOf;
+using draws::rv3;
+using draws::rv6;
+using draws::uni;  // soma/studies/scalar_draws.hpp
 template <class S> Mat6<S> adm(const Vec6<S>& s) { return SE3Tangent<S>(s).ad(); }
 template <class S> Vec6<S> br(const Vec6<S>& a, const Vec6<S>& b) { return adm(a) * b; }
 template <class S> Vec6<S> coad(const Vec6<S>& s, const Vec6<S>& P) { return -adm(s).transpose() * P; }
@@ -178,13 +172,6 @@ template <class S> Vec6<S> lineScrew(const Vec3<S>& w, const Vec3<S>& r, const S
 template <class S> SpatialInertia<S> castBody(const SpatialInertia<double>& b) {
   const Mat3<S> I = castMatrix<S>(b.inertiaAboutCentre());
   return SpatialInertia<S>(scalarCast<S>(b.mass()), castMatrix<S>(b.centreOfMass()), Mat3<S>((I + I.transpose()) / S(2)));
-}
-template <class S> S frac(long n, long d = 1) { return S(n) / S(d); }
-/// max(a, b), propagating NaN (a comparison-based max would silently skip it).
-template <class S> S maxOf(const S& a, const S& b) {
-  if (!isFinite(a)) return a;
-  if (!isFinite(b)) return b;
-  return a < b ? b : a;
 }
 template <class D> typename D::Scalar maxAbsOf(const Eigen::MatrixBase<D>& m) { return m.cwiseAbs().maxCoeff(); }
 /// Joint values drawn in double (rjoints) and cast to S.
