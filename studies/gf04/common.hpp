@@ -8,6 +8,7 @@
 #include "soma/algebra/screw.hpp"
 #include "soma/algebra/se2.hpp"
 #include "soma/algebra/tolerance.hpp"
+#include "soma/studies/scalar_draws.hpp"
 #include "soma/studies/study.hpp"
 
 #include <random>
@@ -36,9 +37,7 @@ template <class S> using MatX = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>
 inline std::mt19937_64 rng(std::uint64_t seed = 44) { return std::mt19937_64(seed); }
 
 /// Uniform in [lo, hi], drawn in double (exact in every rung of the ladder) and cast to S.
-template <class S> S uniform(std::mt19937_64& g, double lo = -1, double hi = 1) {
-  return scalarCast<S>(std::uniform_real_distribution<double>(lo, hi)(g));
-}
+template <class S> S uniform(std::mt19937_64& g, double lo = -1, double hi = 1) { return draws::uni<S>(g, lo, hi); }
 template <class S, int N> Eigen::Matrix<S, N, 1> randomVec(std::mt19937_64& g, double lo = -1,
                                                            double hi = 1) {
   Eigen::Matrix<S, N, 1> v;
@@ -66,12 +65,7 @@ template <class D> typename D::Scalar maxAbs(const Eigen::MatrixBase<D>& m) {
     }
   return r;
 }
-/// max(a, b), propagating NaN and infinity.
-template <class S> S maxOf(const S& a, const S& b) {
-  if (!isFinite(a)) return a;
-  if (!isFinite(b)) return b;
-  return a < b ? b : a;
-}
+using draws::maxOf;  // max(a, b), propagating NaN: soma/studies/scalar_draws.hpp
 /// xⁿ by repeated multiplication (std::pow(float, int) would return double).
 template <class S> S ipow(const S& x, int n) {
   S r(1);

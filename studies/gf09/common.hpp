@@ -7,6 +7,7 @@
 #include "soma/algebra/dual_quaternion.hpp"
 #include "soma/algebra/se3.hpp"
 #include "soma/algebra/tolerance.hpp"
+#include "soma/studies/scalar_draws.hpp"
 #include "soma/studies/study.hpp"
 
 #include <random>
@@ -23,10 +24,9 @@ using std::sqrt;
 using std::tan;
 
 inline std::mt19937_64 rng(std::uint64_t seed) { return std::mt19937_64(seed); }
-/// Uniform in [lo, hi], drawn in double (the same inputs on every rung of the ladder) and cast to S.
-template <class S> S uni(std::mt19937_64& g, double lo = -1, double hi = 1) {
-  return scalarCast<S>(std::uniform_real_distribution<double>(lo, hi)(g));
-}
+using draws::frac;
+using draws::maxOf;
+using draws::uni;  // soma/studies/scalar_draws.hpp
 template <class S> Vec3<S> randVec(std::mt19937_64& g) {
   const S x = uni<S>(g), y = uni<S>(g), z = uni<S>(g);
   return Vec3<S>(x, y, z);
@@ -37,15 +37,7 @@ template <class S> Vec3<S> randUnit(std::mt19937_64& g) {
   while (v.squaredNorm() < S(1) / S(10));
   return v / sqrt(v.squaredNorm());
 }
-/// n/d in S: an input such as 0.3 written exactly as the scalar rounds it, not as a double.
-template <class S> S frac(long n, long d = 1) { return S(n) / S(d); }
 template <class S> std::string str(const S& x) { return toString(toDouble(x), 6); }
-/// max(a, b), propagating NaN (a comparison-based max would silently skip it).
-template <class S> S maxOf(const S& a, const S& b) {
-  if (!isFinite(a)) return a;
-  if (!isFinite(b)) return b;
-  return a < b ? b : a;
-}
 
 /// A product of generators in the given order (0-based indices), e.g. gen<Sig>({1, 2}) = e₂e₃
 /// in the book's 1-based names.

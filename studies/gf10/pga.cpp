@@ -10,6 +10,7 @@
 #include "soma/geometry/pga/motor.hpp"
 #include "soma/geometry/pga/projection.hpp"
 #include "soma/geometry/pga/reflection.hpp"
+#include "soma/studies/scalar_draws.hpp"
 #include "soma/studies/study.hpp"
 
 #include <Eigen/LU>
@@ -26,10 +27,8 @@ using std::ldexp;
 using std::sqrt;
 
 std::mt19937_64 rng(std::uint64_t seed) { return std::mt19937_64(seed); }
-/// Uniform in [lo, hi], drawn in double (the same inputs on every rung of the ladder) and cast to S.
-template <class S> S uni(std::mt19937_64& g, double lo = -1, double hi = 1) {
-  return scalarCast<S>(std::uniform_real_distribution<double>(lo, hi)(g));
-}
+using draws::frac;
+using draws::uni;  // soma/studies/scalar_draws.hpp
 template <class S> Vec3<S> rvec(std::mt19937_64& g, double r = 1) {
   const S x = uni<S>(g, -r, r), y = uni<S>(g, -r, r), z = uni<S>(g, -r, r);
   return Vec3<S>(x, y, z);
@@ -44,8 +43,6 @@ template <class S> Vec3<S> runit(std::mt19937_64& g) {
   const Vec3<S> w = castMatrix<S>(v);
   return w / sqrt(w.squaredNorm());
 }
-/// n/d in S: an input such as 0.3 written exactly as the scalar rounds it, not as a double.
-template <class S> S frac(long n, long d = 1) { return S(n) / S(d); }
 template <class S> S md(const Vec3<S>& a, const Vec3<S>& b) { return (a - b).cwiseAbs().maxCoeff(); }
 template <class S, clifford::GradeMask A, clifford::GradeMask B>
 S md(const clifford::Multivector<Cl031, S, A>& a, const clifford::Multivector<Cl031, S, B>& b) {

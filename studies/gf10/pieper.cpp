@@ -5,6 +5,7 @@
 #include "soma/geometry/serial/closed_form_ik.hpp"
 #include "soma/render/render.hpp"
 #include "soma/geometry/serial/example_robots.hpp"
+#include "soma/studies/scalar_draws.hpp"
 #include "soma/studies/study.hpp"
 
 #include <fmt/format.h>
@@ -22,14 +23,8 @@ using std::cos;
 using std::sin;
 using std::sqrt;
 
-/// n/d in S: an input such as 0.3 written exactly as the scalar rounds it, not as a double.
-template <class S> S frac(long n, long d = 1) { return S(n) / S(d); }
-/// max(a, b), propagating NaN (a comparison-based max would silently skip it).
-template <class S> S maxOf(const S& a, const S& b) {
-  if (!isFinite(a)) return a;
-  if (!isFinite(b)) return b;
-  return a < b ? b : a;
-}
+using draws::frac;
+using draws::maxOf;  // soma/studies/scalar_draws.hpp
 template <class S> S minOf(const S& a, const S& b) {
   if (!isFinite(a)) return a;
   if (!isFinite(b)) return b;

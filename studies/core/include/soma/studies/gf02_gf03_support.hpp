@@ -6,6 +6,7 @@
 // scaffolding, not library concepts.
 #include "soma/algebra/se3.hpp"
 #include "soma/algebra/tolerance.hpp"
+#include "soma/studies/scalar_draws.hpp"
 
 #include <Eigen/LU>
 
@@ -21,11 +22,7 @@ template <class S> using VecX = Eigen::Matrix<S, Eigen::Dynamic, 1>;
 /// Fixed-seed generator: every study draws from its own seed so runs are reproducible.
 inline std::mt19937_64 rng(std::uint64_t seed) { return std::mt19937_64(seed); }
 
-/// Uniform draw in [a, b) made in double and cast to S (the same inputs on every rung).
-template <class S> S uni(std::mt19937_64& g, double a = -1, double b = 1) {
-  std::uniform_real_distribution<double> u(a, b);
-  return scalarCast<S>(u(g));
-}
+using draws::uni;  // soma/studies/scalar_draws.hpp
 template <class S> S gauss(std::mt19937_64& g) {
   std::normal_distribution<double> n;
   return scalarCast<S>(n(g));
