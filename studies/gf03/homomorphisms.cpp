@@ -192,7 +192,8 @@ template <class S> void metricGroups(Context& c) {
         const S l = es.eigenvalues()(i);
         if ((pass == 0) == (l > S(0))) p.col(col++) = es.eigenvectors().col(i) / sqrt(abs(l));
       }
-    c.checkResidual("PᵀQP = diag(I3, −I1) (tolerance × cond Q)", maxAbs(MatX<S>(p.transpose() * q * p - eta)), tol * condQ);
+    const S e1 = maxAbs(MatX<S>(p.transpose() * q * p - eta));
+    c.checkResidual("PᵀQP = diag(I3, −I1) (tolerance × cond Q)", e1, tol * condQ);
     // an element of SO(3,1): a boost in (x, t) times a rotation of (x, y, z)
     const S r = S(7) / S(10);
     MatX<S> boost = MatX<S>::Identity(n, n);
@@ -204,8 +205,13 @@ template <class S> void metricGroups(Context& c) {
     c.checkNear("det Λ = 1", S(1), lor.determinant(), tol);
     // the conjugate group preserving Q: M = P Λ P⁻¹
     const MatX<S> m = p * lor * p.inverse();
-    c.checkResidual("M = PΛP⁻¹ preserves the indefinite Q: MᵀQM = Q (relative, tolerance × cond Q)",
-                    maxAbs(MatX<S>(m.transpose() * q * m - q)) / maxAbs(q), tol * condQ * S(10));
+    // With E₁ = PᵀQP − η (measured above) and ΛᵀηΛ = η: MᵀQM − Q = P⁻ᵀ(ΛᵀE₁Λ − E₁)P⁻¹, so
+    // |MᵀQM − Q| ≤ ‖P⁻¹‖²(1 + ‖Λ‖²)·n|E₁|max, plus the rounding of the products, tol·‖M‖²‖Q‖
+    // (Frobenius norms bound the 2-norms).
+    const MatX<S> pInv = p.inverse();
+    const S bound = (S(n) * e1 * pInv.squaredNorm() * (S(1) + lor.squaredNorm()) + tol * m.squaredNorm() * q.norm()) / maxAbs(q);
+    c.checkResidual("M = PΛP⁻¹ preserves the indefinite Q: MᵀQM = Q (relative; ‖P⁻¹‖²(1 + ‖Λ‖²)·n|PᵀQP − η| + tol‖M‖²‖Q‖)",
+                    maxAbs(MatX<S>(m.transpose() * q * m - q)) / maxAbs(q), bound);
     c.note("Indefinite example: cond(Q) = " + toString(condQ, 3) + ".");
   }
   // A random non-degenerate skew 4×4 form is congruent to E_4 (symplectic Gram–Schmidt).
@@ -235,8 +241,9 @@ template <class S> void metricGroups(Context& c) {
     MatX<S> e = MatX<S>::Zero(n, n);
     e.block(0, 2, 2, 2) = MatX<S>::Identity(2, 2);
     e.block(2, 0, 2, 2) = -MatX<S>::Identity(2, 2);
-    c.checkResidual("random non-degenerate skew A: PᵀAP = E_4 (symplectic Gram–Schmidt)",
-                    maxAbs(MatX<S>(p.transpose() * a * p - e)), tol * S(100));
+    // each entry uᵢᵀAvⱼ is formed from vectors built by n projections: rounding tol·‖P‖²‖A‖
+    c.checkResidual("random non-degenerate skew A: PᵀAP = E_4 (symplectic Gram–Schmidt; tol·‖P‖²‖A‖)",
+                    maxAbs(MatX<S>(p.transpose() * a * p - e)), tol * p.squaredNorm() * a.norm());
   }
 }
 
@@ -444,10 +451,15 @@ template <class S> void projectiveGroup(Context& c) {
     const VecX<S> y = uniMat<S>(g, m, 1);
     MatX<S> bx = uniMat<S>(g, m, m), by = uniMat<S>(g, m, m);
     bx.col(0) = x, by.col(0) = y;  // complete x and y to bases
-    const MatX<S> M = by * bx.inverse();
+    const MatX<S> bxInv = bx.inverse();
+    const MatX<S> M = by * bxInv;
     const VecX<S> mx = M * x;
-    c.checkResidual("transitive: M = [y …][x …]⁻¹ maps x to y" + tag,
-                    maxAbs(MatX<S>(mx * y.transpose() - y * mx.transpose())) / (sqrt(mx.squaredNorm() * y.squaredNorm())), tol * S(100));
+    // x = Bₓe₁, so Mx − y = B_y(Bₓ⁻¹Bₓ − I)e₁ + rounding of the two products (tol·‖B_y‖‖Bₓ⁻¹‖|x|);
+    // with e = Mx − y the minors of (Mx, y) are at most 2|e||y|, divided by |Mx||y|
+    const S invDefect = MatX<S>(bxInv * bx - MatX<S>::Identity(m, m)).norm();
+    const S bound = S(2) * by.norm() * (invDefect + tol * bxInv.norm() * sqrt(x.squaredNorm())) / sqrt(mx.squaredNorm());
+    c.checkResidual("transitive: M = [y …][x …]⁻¹ maps x to y (2‖B_y‖(‖Bₓ⁻¹Bₓ − I‖ + tol‖Bₓ⁻¹‖|x|)/|Mx|)" + tag,
+                    maxAbs(MatX<S>(mx * y.transpose() - y * mx.transpose())) / (sqrt(mx.squaredNorm() * y.squaredNorm())), bound);
     // isotropy of x in GL(n+1): {M : Mx ∝ x}, linear conditions (I − x̂x̂ᵀ)Mx = 0 on M
     const VecX<S> xh = x / sqrt(x.squaredNorm());
     const MatX<S> proj = MatX<S>::Identity(m, m) - xh * xh.transpose();
