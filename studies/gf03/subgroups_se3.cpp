@@ -281,7 +281,7 @@ template <class S> void subgroupIntersection(Context& c) {
     m << basisAbout(p), -basisAbout(q);
     return 6 - numericalRank<S>(m);
   };
-  S eDir(0), eFix(0);
+  S eDir(0), eFix(0), dirBound(0);
   int bad = 0;
   for (int t = 0; t < 100; ++t) {
     const Vec3<S> p = uniVec3<S>(g), q = uniVec3<S>(g);
@@ -297,12 +297,17 @@ template <class S> void subgroupIntersection(Context& c) {
     Vec3<S> d = p - q;
     d /= sqrt(d.squaredNorm());
     eDir = std::max(eDir, sqrt(w.cross(d).squaredNorm()));
+    // the LU's kernel vector is the exact one of m + F, ‖F‖ ≤ tol‖m‖, so it turns by ≤ ‖F‖/σ₅(m), σ₅
+    // estimated by the smallest nonzero pivot |u₅₅| of the complete-pivoting LU (rank-revealing);
+    // d = p − q carries ε(|p| + |q|)/|p − q|
+    dirBound = std::max(dirBound, tol * (m.norm() / abs(lu.matrixLU()(4, 4)) +
+                                         (sqrt(p.squaredNorm()) + sqrt(q.squaredNorm())) / sqrt(Vec3<S>(p - q).squaredNorm())));
     // group level: a rotation about the line pq fixes both p and q
     const SE3<S> r = screwMotion<S>(d, p, S(0), uni<S>(g, -3, 3));
     eFix = std::max(eFix, maxAbs(Vec3<S>(r.act(p) - p)) + maxAbs(Vec3<S>(r.act(q) - q)));
   }
   c.checkEqual("p ≠ q (100 random pairs): pairs whose intersection is not 1-dimensional (SO(2) about pq)", 0, bad);
-  c.checkResidual("the common rotation axis is parallel to p − q", eDir, tol * S(10));
+  c.checkResidual("the common rotation axis is parallel to p − q (tol(‖m‖/|u₅₅| + (|p| + |q|)/|p − q|))", eDir, dirBound);
   c.checkResidual("rotations about the line pq fix p and q", eFix, tol);
   const Vec3<S> p = uniVec3<S>(g);
   c.checkEqual("p = q: the intersection is the SO(3) about p (dim 3)", 3, interDim(p, p));
