@@ -17,7 +17,6 @@
 namespace soma::studies::gf06 {
 
 inline constexpr const char* kChapter = "GF 6 — Line geometry";
-inline constexpr const char* kChapter9 = "GF 9 — Clifford algebra";
 
 using V3 = Eigen::Vector3d;
 using V6 = Vec6<double>;
