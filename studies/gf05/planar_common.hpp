@@ -58,6 +58,20 @@ template <class S> bool fdResolves(Context& c, const std::string& what, double h
   return false;
 }
 
+/// checkPrintedFails where S can tell the erratum from rounding: the printed formula's miss, of size
+/// `missScale` (as measured in double), must exceed Context::kPrintedMissFactor × the rounding bound.
+/// Where it cannot (float's bound is too wide), the check is skipped with a note.
+template <class S>
+void printedFailsIfResolved(Context& c, const std::string& name, const std::string& erratum, const S& residual, const S& bound,
+                            double missScale) {
+  if (S(Context::kPrintedMissFactor) * bound < S(missScale)) {
+    c.checkPrintedFails(name, erratum, residual, bound);
+    return;
+  }
+  c.note("Skipped in this scalar: the printed-formula check \"" + name + "\" (erratum " + erratum + "): its miss " +
+         toString(toDouble(residual), 3) + " cannot be 1000× the rounding bound " + toString(toDouble(bound), 3) + ".");
+}
+
 /// Finite-difference curvature of the path of a coupler body point at crank angle th (mode m),
 /// 5-point stencil in θ1 (an independent method: the mechanism is solved at each sample).
 template <class S> S fdCurvature(const FourBar<S>& fb, const S& th, int mode, const Vec2<S>& body, const S& h = S(1) / S(1000)) {
