@@ -1,7 +1,7 @@
 #pragma once
 // Shared helpers of the GF §5.3–5.4 studies (planar kinematics), templated on the scalar S of a
-// study that runs in the asked scalar (--scalar); S = double for the finite-position synthesis and
-// the figures (soma::render draws double geometry).
+// study that runs in the asked scalar (--scalar); S = double for the figures (soma::render draws
+// double geometry).
 #include "soma/geometry/planar/burmester_synthesis.hpp"
 #include "soma/render/plot.hpp"
 #include "soma/render/svg.hpp"
@@ -84,9 +84,10 @@ template <class S> S fdCurvature(const FourBar<S>& fb, const S& th, int mode, co
   return cross2<S>(d1, d2) / (n * n * n);
 }
 
-/// Finite-position synthesis round trips and figures (gf05/planar_synthesis.cpp), run inside
-/// GF-5.3.5-burmester-count (the catalogue has no item of its own for it: it is beyond the book).
-void finitePositionSynthesis(Context& c);
+/// Finite-position synthesis round trips in S and their figures in double (gf05/planar_synthesis.cpp,
+/// instantiated there for the ladder), run inside GF-5.3.5-burmester-count (the catalogue has no item
+/// of its own for it: it is beyond the book).
+template <class S> void finitePositionSynthesis(Context& c);
 
 inline void circlePoints(const V2& c, double r, std::vector<double>& xs, std::vector<double>& ys, int n = 240) {
   xs.clear();

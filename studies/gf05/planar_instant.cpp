@@ -1,8 +1,8 @@
 // Studies of GF §5.3.1–5.3.5: instantaneous invariants of a planar motion on the catalogue
 // 4-bar's coupler motion, each against a second method; errata E5.9–E5.15 shown failing as
-// printed and passing corrected. Every study runs in the asked scalar (--scalar); the figure of
-// GF-5.3.4-cubic-stationary-curvature is drawn in double (soma::render), and the finite-position
-// synthesis that GF-5.3.5-burmester-count runs (gf05/planar_synthesis.cpp) is computed in double.
+// printed and passing corrected. Every study runs in the asked scalar (--scalar), the finite-position
+// synthesis that GF-5.3.5-burmester-count runs (gf05/planar_synthesis.cpp) too; the figures are drawn
+// in double (soma::render).
 #include "gf05/planar_common.hpp"
 
 namespace soma::studies::gf05p::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
@@ -433,10 +433,7 @@ template <class S> void burmesterCount(Context& c) {
          "the pole in direction (c, s) the first gives ρ = −F₂/F₃, and substituting in the second gives a binary form of "
          "degree 7 = (c² + s²)·G₁·Q₄. Q₄'s roots are the four Burmester directions. The complex pair matches the catalogue's "
          "independent sympy resultant.");
-  if (scalarKind<S>() != ScalarKind::Double)
-    c.note("The finite-position synthesis below (beyond the book; gf05/planar_synthesis.cpp, with its figures) is computed in double "
-           "whatever the scalar.");
-  finitePositionSynthesis(c);
+  finitePositionSynthesis<S>(c);
 }
 
 }  // namespace
