@@ -18,6 +18,7 @@ using namespace soma::planar;
 using V2 = Vec2<double>;
 using draws::frac;
 using draws::maxOf;
+using draws::printedTol;
 
 inline const char* kChapter = "GF 5 — A little kinematics";
 
@@ -35,14 +36,6 @@ template <class S = double> MotionJet<S> catalogueJet() { return catalogueBar<S>
 
 /// Identity tolerance: k ulps of unit-scale data in S.
 template <class S = double> S tol(int k = 1024) { return Tolerance<S>::identity(k); }
-
-/// A value printed with `decimals` decimals (the catalogue's): half a unit of its last digit,
-/// plus `ulps` ε of S times its magnitude `scale` for the rounding of the computation.
-template <class S> S printedTol(int decimals, int ulps = 1024, double scale = 1) {
-  S unitLast(1);
-  for (int i = 0; i < decimals; ++i) unitLast /= S(10);
-  return unitLast / S(2) + S(scale) * Tolerance<S>::identity(ulps);
-}
 
 /// Whether S resolves a finite-difference check of tolerance `tolerance` (the truncation bound of
 /// the stencil): its rounding, ulps·ε/h^order, must stay below. Otherwise (float) the check is

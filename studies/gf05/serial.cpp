@@ -19,6 +19,8 @@ namespace {
 
 using draws::frac;
 using draws::maxOf;
+using draws::minOf;
+using draws::printedTol;
 using draws::uni;
 using std::abs;
 using std::cos;
@@ -35,20 +37,7 @@ template <class S> Vec3<S> unit(std::mt19937_64& g) {
   return Vec3<S>(scalarCast<S>(x), scalarCast<S>(y), scalarCast<S>(z)).normalized();
 }
 template <class S> S ang(std::mt19937_64& g) { return uni<S>(g, -3, 3); }
-/// min(a, b), propagating NaN (as maxOf).
-template <class S> S minOf(const S& a, const S& b) {
-  if (!isFinite(a)) return a;
-  if (!isFinite(b)) return b;
-  return b < a ? b : a;
-}
 template <class S> S wrapDiff(const S& a, const S& b) { return abs(S(sin((a - b) / S(2)))); }
-/// A value printed with `decimals` decimals in the book or the catalogue: half a unit of its last
-/// digit, plus `ulps` ε for the rounding of the computation it is compared with.
-template <class S> S printedTol(int decimals, int ulps = 64) {
-  S unitLast(1);
-  for (int i = 0; i < decimals; ++i) unitLast /= S(10);
-  return unitLast / S(2) + Tolerance<S>::identity(ulps);
-}
 
 // GF §5.1, GF-5.1-wrist-fk: Rodrigues e^{θv}u = u + sin θ v×u + (1−cos θ) v×(v×u) vs the
 // exponential of SO(3), and the wrist robot's FK vs the product of exponentials.
@@ -344,8 +333,8 @@ template <class S> void fingerExample(Context& c) {
   const S c3a = (-A + rho) / B, c3b = (-A - rho) / B;
   // (−A ± ρ)/B with |A|, ρ ≤ 3 and |B| = 0.825: a few ε of each term, 64 ε in all
   c.checkNear("corrected A, B (E5.4): a root cos θ3 = 0.3623578 (7 decimals + 64 ε)", fromString<S>("0.3623578"), minOf(c3a, c3b),
-              printedTol<S>(7));
-  c.checkNear("… the other root 5.754470 (infeasible; 6 decimals + 64 ε)", fromString<S>("5.754470"), maxOf(c3a, c3b), printedTol<S>(6));
+              printedTol<S>(7, 64));
+  c.checkNear("… the other root 5.754470 (infeasible; 6 decimals + 64 ε)", fromString<S>("5.754470"), maxOf(c3a, c3b), printedTol<S>(6, 64));
   c.checkNear("true cos θ3 (64 ε)", S(cos(q(2))), minOf(c3a, c3b), Tolerance<S>::identity(64));
   const auto sol = solveArm3R(robot, robot.fk(JointVector<S>(q)));
   c.checkEqual("solveArm3R: 2 postures at this target", 2, int(sol.count()));
