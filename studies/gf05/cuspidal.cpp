@@ -1,4 +1,5 @@
-// Studies of GF §5.2.3 (singularities of 3R arms, cusps, cuspidal robots), in double: the cusp
+// Studies of GF §5.2.3 (singularities of 3R arms, cusps, cuspidal robots), in double (each study
+// says why: OMPL, geometry/cuspidal's double-only det J series and cuspidality analysis): the cusp
 // points of an orthogonal arm by two methods, Fig. 5.2 "circling a cusp" reproduced by IK
 // continuation, a witness path planned with OMPL, and the bifurcation claim (at det J = 0 two
 // roots of the IK equation coalesce).
@@ -510,7 +511,9 @@ SOMA_STUDY({.id = "GF-5.2.3-cuspidal-posture-change",
             .whyDouble = "its witness path is planned with OMPL, which works in double"});
 SOMA_STUDY({.id = "GF-5.2.3-bifurcation-factorisation",
             .title = "At det J = 0 two roots of the 3R IK equation coalesce",
-            .source = "GF §5.2.3", .chapter = kChapter, .run = bifurcation});
+            .source = "GF §5.2.3", .chapter = kChapter, .run = bifurcation,
+            .whyDouble = "its singular configurations are traced by geometry/cuspidal's det J series (detJSeries, "
+                         "traceSingularCurves), written in double"});
 SOMA_STUDY({.id = "SOMA-5.2.3-cusp-map",
             .title = "Parameter-space map of orthogonal 3R arms by number of cusps (TBB), traced cross-check",
             .source = "GF §5.2.3; Baili, Wenger, Chablat 2004", .chapter = kChapter, .run = cuspMapStudy,
@@ -521,11 +524,13 @@ SOMA_STUDY({.id = "SOMA-5.2.3-workspace-ompl",
             .whyDouble = "OMPL plans in double"});
 SOMA_STUDY({.id = "SOMA-5.2.3-witness-6r",
             .title = "6R witness search: PUMA 560 none found (not a proof), a cuspidal 6R found",
-            .source = "GF §5.2.3; Wenger", .chapter = kChapter, .run = witness6RStudy});
+            .source = "GF §5.2.3; Wenger", .chapter = kChapter, .run = witness6RStudy,
+            .whyDouble = "findWitness6R (geometry/cuspidal) searches in double: its paths are planned with OMPL"});
 SOMA_STUDY({.id = "SOMA-5.2.3-decomposition-6r",
             .title = "6R cuspidality decided by decomposition (wrist + arm, UR chain), the CRX-10iA found cuspidal",
             .source = "GF §5.2.3; Baili, Wenger, Chablat 2004; Salunkhe, Chablat, Wenger 2023", .chapter = kChapter,
-            .run = decomposition6RStudy});
+            .run = decomposition6RStudy,
+            .whyDouble = "analyseCuspidality (geometry/cuspidal) runs in double: its witness searches plan with OMPL"});
 
 }  // namespace
 }  // namespace soma::studies::SOMA_UNITY_ID

@@ -1,5 +1,6 @@
 // Finite-position Burmester synthesis (beyond GF §5.3.5, which treats the infinitesimal case):
-// round trips through random 4-bars, and the figures. Called from GF-5.3.5-burmester-count.
+// round trips through random 4-bars in the asked scalar, and the figures (in double, soma::render).
+// Called from GF-5.3.5-burmester-count.
 #include "gf05/planar_common.hpp"
 
 #include <random>
@@ -8,28 +9,39 @@ namespace soma::studies::gf05p {  // not per-file (SOMA_UNITY_ID): it defines fu
 
 namespace {
 
-struct Trial {
-  FourBar<double> bar;
-  std::vector<SE2<double>> positions;
-  V2 c1, c4, z2, z3;
+template <class S> struct Trial {
+  FourBar<S> bar;
+  std::vector<SE2<S>> positions;
+  Vec2<S> c1, c4, z2, z3;
 };
 
-Trial randomTrial(std::mt19937_64& g) {
+/// A random crank-rocker and five coupler poses: draws in double (the same on every rung), the
+/// linkage built and solved in S.
+template <class S> Trial<S> randomTrial(std::mt19937_64& g) {
+  using std::cos;
+  using std::sin;
+  using P = Vec2<S>;
   std::uniform_real_distribution<double> u(0, 1);
+  auto d = [&](double lo, double width) { return scalarCast<S>(lo + width * u(g)); };
   for (;;) {
-    const double l0 = 2 + 2 * u(g), l1 = 0.5 + 0.7 * u(g), l2 = 1.5 + 2 * u(g), l3 = 1.5 + 2 * u(g);
-    const double ang = 6.283 * u(g);
-    const V2 c1(2 * u(g) - 1, 2 * u(g) - 1), c4 = c1 + l0 * V2(std::cos(ang), std::sin(ang));
-    const V2 pc(2 * u(g) - 1, 1 + u(g));
-    const FourBar<double> fb(c1, c4, l1, l2, l3, pc);
+    const S l0 = d(2, 2), l1 = d(0.5, 0.7), l2 = d(1.5, 2), l3 = d(1.5, 2);
+    const S ang = d(0, 6.283);
+    const S x1 = d(-1, 2), y1 = d(-1, 2);
+    const P c1(x1, y1), c4 = c1 + l0 * P(cos(ang), sin(ang));
+    const S px = d(-1, 2), py = d(1, 1);
+    const P pc(px, py);
+    const FourBar<S> fb(c1, c4, l1, l2, l3, pc);
     if (fb.classify().type != GrashofType::CrankRocker) continue;
-    const double t0 = 6.283 * u(g);
+    const S t0 = d(0, 6.283);
     const int mode = u(g) < 0.5 ? 1 : -1;
-    const SE2<double> off(0.4, pc);
-    std::vector<SE2<double>> pos;
-    for (int i = 0; i < 5; ++i) pos.push_back(fb.solve(t0 + 0.9 * i + 0.3 * u(g), mode)->coupler * off);
-    const SE2<double> B = off.inverse();
-    return {fb, pos, c1, c4, B.act(V2(0, 0)), B.act(V2(l2, 0))};
+    const SE2<S> off(frac<S>(4, 10), pc);
+    std::vector<SE2<S>> pos;
+    for (int i = 0; i < 5; ++i) {
+      const S ti = t0 + frac<S>(9 * i, 10) + d(0, 0.3);
+      pos.push_back(fb.solve(ti, mode)->coupler * off);
+    }
+    const SE2<S> B = off.inverse();
+    return {fb, pos, c1, c4, B.act(P(S(0), S(0))), B.act(P(l2, S(0)))};
   }
 }
 
@@ -45,52 +57,10 @@ void addPoints(render::Plot& plot, const std::string& name, const std::vector<V2
   s.markerRadius = radius;
 }
 
-}  // namespace
-
-void finitePositionSynthesis(Context& c) {
+/// The two figures of the finite-position synthesis, from the first trial, drawn in double.
+void synthesisFigures(Context& c) {
   std::mt19937_64 g(20261130);
-  const int trials = 100;
-  int success = 0, recovered = 0;
-  double worstT = 0, worstA = 0, worstRes = 0, worstComplex = 0, worstAlgebraic = 0;
-  int hist[5] = {0, 0, 0, 0, 0};
-  Trial shown = randomTrial(g);
-  for (int t = 0; t < trials; ++t) {
-    const Trial tr = t == 0 ? shown : randomTrial(g);
-    const BurmesterSynthesis<double> bs(tr.positions);
-    int cc = 0;
-    double cres = 1, alg = 1;
-    const auto pairs = bs.burmesterPairs(&cc, &cres, &alg);
-    worstComplex = std::max(worstComplex, cres);
-    worstAlgebraic = std::max(worstAlgebraic, alg);
-    if (int(pairs.size()) + cc == 4) ++hist[pairs.size()];
-    int ia = -1, ib = -1;
-    for (int k = 0; k < int(pairs.size()); ++k) {
-      worstRes = std::max(worstRes, pairs[k].residual);
-      if ((pairs[k].centre - tr.c1).norm() < 1e-6 && (pairs[k].circle - tr.z2).norm() < 1e-6) ia = k;
-      if ((pairs[k].centre - tr.c4).norm() < 1e-6 && (pairs[k].circle - tr.z3).norm() < 1e-6) ib = k;
-    }
-    if (ia < 0 || ib < 0) continue;
-    ++recovered;
-    const DriveCheck<double> dc = bs.drive(pairs[ia], pairs[ib]);
-    worstT = std::max(worstT, dc.worstTranslation);
-    worstA = std::max(worstA, dc.worstAngle);
-    if (dc.reached && dc.sameCircuit && dc.worstTranslation < 1e-9 && dc.worstAngle < 1e-9) ++success;
-  }
-  c.checkEqual("finite positions: real + complex Burmester pairs = 4 in every trial (of 100)", trials, hist[0] + hist[2] + hist[4]);
-  c.checkResidual("… the non-real solutions are genuine: worst relative residual after complex Newton", worstComplex, 1e-12);
-  c.checkResidual("… two-conic intersection alone (no spurious poles or circular points): worst relative residual before Newton",
-                  worstAlgebraic, 1e-9);
-  c.checkEqual("round trips: original pivots recovered among the Burmester pairs (of 100 random crank-rockers)", trials, recovered);
-  c.checkEqual("round trips: rebuilt 4-bar passes through all 5 positions on one circuit (success count)", trials, success);
-  c.checkResidual("worst translation error when driving through the positions (relative to the data scale)", worstT, 1e-9);
-  c.checkResidual("worst angle error (rad)", worstA, 1e-9);
-  c.checkResidual("worst bilinear residual of a Burmester pair (relative)", worstRes, 1e-12);
-  c.note("Finite-position synthesis (beyond the book): 100 random crank-rockers (seed 20261130), five coupler poses each; "
-         "real Burmester pair counts 0/2/4: " + std::to_string(hist[0]) + "/" + std::to_string(hist[2]) + "/" +
-         std::to_string(hist[4]) + "; worst pair residual " + toString(worstRes, 3) + " (relative to max(scale, |z|, |m − centroid|)²)" +
-         "; success " + std::to_string(success) + "/" + std::to_string(trials) +
-         "; worst pose error " + toString(worstT, 3) + " (translation, relative), " + toString(worstA, 3) + " rad.");
-  if (!c.makeFigures()) return;
+  const Trial<double> shown = randomTrial<double>(g);
   // Figure 1: the two centre-point curves and their intersections
   const BurmesterSynthesis<double> bs(shown.positions);
   const auto pairs = bs.burmesterPairs();
@@ -179,5 +149,61 @@ void finitePositionSynthesis(Context& c) {
            "1–5; black ticks: the prescribed frames' x axes) on its coupler curve; pose error " +
                toString(dc.worstTranslation, 2) + " (relative).");
 }
+
+}  // namespace
+
+template <class S> void finitePositionSynthesis(Context& c) {
+  std::mt19937_64 g(20261130);
+  const int trials = 100;
+  int success = 0, recovered = 0;
+  S worstT(0), worstA(0), worstRes(0), worstComplex(0), worstAlgebraic(0);
+  int hist[5] = {0, 0, 0, 0, 0};
+  // Thresholds: the residuals after Newton (relative) at 4096 ε; the two-conic intersection before
+  // Newton at 4096 ε too (it runs in S, in float in double: see burmesterPairs); the pivots matched
+  // within √ε; a round trip succeeds when the rebuilt 4-bar reproduces the five poses to 4096 ε
+  // (9.1e-13 in double, where 1e-9 was used before).
+  const S match = Tolerance<S>::sqrtEpsilon(), drive = tol<S>(4096);
+  for (int t = 0; t < trials; ++t) {
+    const Trial<S> tr = randomTrial<S>(g);
+    const BurmesterSynthesis<S> bs(tr.positions);
+    int cc = 0;
+    S cres(1), alg(1);
+    const auto pairs = bs.burmesterPairs(&cc, &cres, &alg);
+    worstComplex = maxOf(worstComplex, cres);
+    worstAlgebraic = maxOf(worstAlgebraic, alg);
+    if (int(pairs.size()) + cc == 4) ++hist[pairs.size()];
+    int ia = -1, ib = -1;
+    for (int k = 0; k < int(pairs.size()); ++k) {
+      worstRes = maxOf(worstRes, pairs[k].residual);
+      if ((pairs[k].centre - tr.c1).norm() < match && (pairs[k].circle - tr.z2).norm() < match) ia = k;
+      if ((pairs[k].centre - tr.c4).norm() < match && (pairs[k].circle - tr.z3).norm() < match) ib = k;
+    }
+    if (ia < 0 || ib < 0) continue;
+    ++recovered;
+    const DriveCheck<S> dc = bs.drive(pairs[ia], pairs[ib]);
+    worstT = maxOf(worstT, dc.worstTranslation);
+    worstA = maxOf(worstA, dc.worstAngle);
+    if (dc.reached && dc.sameCircuit && dc.worstTranslation < drive && dc.worstAngle < drive) ++success;
+  }
+  c.checkEqual("finite positions: real + complex Burmester pairs = 4 in every trial (of 100)", trials, hist[0] + hist[2] + hist[4]);
+  c.checkResidual("… the non-real solutions are genuine: worst relative residual after complex Newton (4096 ε)", worstComplex, tol<S>(4096));
+  c.checkResidual("… two-conic intersection alone (no spurious poles or circular points): worst relative residual before Newton (4096 ε)",
+                  worstAlgebraic, tol<S>(4096));
+  c.checkEqual("round trips: original pivots recovered among the Burmester pairs (of 100 random crank-rockers; within √ε)", trials, recovered);
+  c.checkEqual("round trips: rebuilt 4-bar passes through all 5 positions on one circuit (success count; 4096 ε)", trials, success);
+  c.checkResidual("worst translation error when driving through the positions (relative to the data scale; 4096 ε)", worstT, drive);
+  c.checkResidual("worst angle error (rad; 4096 ε)", worstA, drive);
+  c.checkResidual("worst bilinear residual of a Burmester pair (relative; 4096 ε)", worstRes, tol<S>(4096));
+  c.note("Finite-position synthesis (beyond the book): 100 random crank-rockers (seed 20261130), five coupler poses each; "
+         "real Burmester pair counts 0/2/4: " + std::to_string(hist[0]) + "/" + std::to_string(hist[2]) + "/" +
+         std::to_string(hist[4]) + "; worst pair residual " + toString(toDouble(worstRes), 3) + " (relative to max(scale, |z|, |m − centroid|)²)" +
+         "; success " + std::to_string(success) + "/" + std::to_string(trials) +
+         "; worst pose error " + toString(toDouble(worstT), 3) + " (translation, relative), " + toString(toDouble(worstA), 3) + " rad.");
+  if (c.makeFigures()) synthesisFigures(c);
+}
+
+#define SOMA_GF05_FINITE_POSITIONS(S) template void finitePositionSynthesis<S>(Context&);
+SOMA_FOR_EACH_SCALAR(SOMA_GF05_FINITE_POSITIONS)
+#undef SOMA_GF05_FINITE_POSITIONS
 
 }  // namespace soma::studies::gf05p

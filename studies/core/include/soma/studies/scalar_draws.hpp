@@ -1,9 +1,11 @@
 #pragma once
 // Inputs of the studies that run in the asked scalar: random draws made in double and cast to S (the
-// same inputs on every rung of the ladder), exact fractions n/d in S, and a NaN-propagating max.
+// same inputs on every rung of the ladder), exact fractions n/d in S, NaN-propagating max and min, and
+// the tolerance of a value printed to a few decimals.
 // In their own namespace: a chapter takes them by using-declarations (gf12/common.hpp,
 // gf13/common.hpp), so that another chapter's helpers of the same name in a unity batch stay unambiguous.
 #include "soma/algebra/scalar.hpp"
+#include "soma/algebra/tolerance.hpp"
 
 #include <random>
 
@@ -29,6 +31,20 @@ template <class S> S maxOf(const S& a, const S& b) {
   if (!isFinite(a)) return a;
   if (!isFinite(b)) return b;
   return a < b ? b : a;
+}
+/// min(a, b), propagating NaN (as maxOf).
+template <class S> S minOf(const S& a, const S& b) {
+  if (!isFinite(a)) return a;
+  if (!isFinite(b)) return b;
+  return b < a ? b : a;
+}
+/// The tolerance of a value printed with `decimals` decimals (the book's, the catalogue's): half a
+/// unit of its last digit, plus `ulps` ε of S times its magnitude `scale` for the rounding of the
+/// computation it is compared with.
+template <class S> S printedTol(int decimals, int ulps, double scale = 1) {
+  S unitLast(1);
+  for (int i = 0; i < decimals; ++i) unitLast /= S(10);
+  return unitLast / S(2) + scalarCast<S>(scale) * S(ulps) * Tolerance<S>::epsilon();
 }
 
 }  // namespace soma::studies::draws
