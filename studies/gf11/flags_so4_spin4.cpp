@@ -1,6 +1,7 @@
 // Studies of GF §11.1, Study's soma: the stereographic projection, oriented flags and their frames,
 // SO(4) as F⁺(1,2,3;4), double quaternions and Spin(4) = Spin(3) × Spin(3), the whole Study quadric
 // as SO(4), and the Saletan contraction SO(4) → SE(3). Every study honours --scalar.
+#include "gf11/common.hpp"
 #include "soma/algebra/double_quaternion.hpp"
 #include "soma/geometry/study/oriented_flag.hpp"
 #include "soma/geometry/study/quaternion_matrices.hpp"
@@ -10,31 +11,27 @@
 #include <cmath>
 #include <random>
 
-namespace soma::studies::gf11soma::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
+namespace soma::studies::gf11::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
-constexpr const char* kChapter = "GF 11 — The Study quadric";
 using std::abs;
 using std::cos;
 using std::pow;
 using std::sin;
 using std::sqrt;
 
-template <class S> S uni(std::mt19937_64& g, double lo = -1, double hi = 1) {
-  return scalarCast<S>(std::uniform_real_distribution<double>(lo, hi)(g));
-}
-template <class S> Vec4<S> unit4(std::mt19937_64& g) {
+/// A unit vector uniform on S³: four normal draws in double, cast to S and normalised in S.
+template <class S> Vec4<S> gaussianUnit4(std::mt19937_64& g) {
   std::normal_distribution<double> n;
   Vec4<S> v;
   for (int k = 0; k < 4; ++k) v(k) = scalarCast<S>(n(g));
   return v / sqrt(v.squaredNorm());
 }
 template <class S> Quat<S> unitQuat(std::mt19937_64& g) {
-  const Vec4<S> v = unit4<S>(g);
+  const Vec4<S> v = gaussianUnit4<S>(g);
   return Quat<S>(v(0), v(1), v(2), v(3));
 }
 template <class S> S maxAbs4(const Mat4<S>& m) { return m.cwiseAbs().maxCoeff(); }
-template <class S> S tol(int ulps = 256) { return Tolerance<S>::identity(ulps); }
 
 /// The rotation q ↦ g1 q g2* of R⁴ = H (Study order w, x, y, z), from the left and right
 /// quaternion multiplication matrices of GF §9.3 — independent of the double-quaternion code.
@@ -64,7 +61,7 @@ template <class S> void stereographic(Context& c) {
   S worstLine(0), worstRound(0), worstBack(0);
   const Vec4<S> pole(S(0), S(0), S(0), S(-1));
   for (int n = 0; n < 200; ++n) {
-    Vec4<S> p = unit4<S>(g);
+    Vec4<S> p = gaussianUnit4<S>(g);
     if (p(3) < S(-9) / S(10)) p = -p;
     const Vec3<S> u = stereographicProjection<S>(p);
     Vec4<S> q;
@@ -73,7 +70,7 @@ template <class S> void stereographic(Context& c) {
     const Vec4<S> a = p - pole, b = q - pole;
     worstLine = std::max<S>(worstLine, (b - a * (a.dot(b) / a.squaredNorm())).norm() / b.norm());
     worstRound = std::max<S>(worstRound, (inverseStereographicProjection<S>(u) - p).cwiseAbs().maxCoeff());
-    const Vec3<S> v(uni<S>(g, -50, 50), uni<S>(g, -50, 50), uni<S>(g, -50, 50));
+    const Vec3<S> v = rv3<S>(g, -50, 50);
     worstBack = std::max<S>(worstBack, (stereographicProjection<S>(inverseStereographicProjection<S>(v)) - v).norm() /
                                            (S(1) + v.norm()));
   }
@@ -285,7 +282,7 @@ template <class S> void so4WholeQuadric(Context& c) {
     const Vec8<S> p = h.studyPoint();
     worstStudy = std::max<S>(worstStudy, abs(Vec4<S>(p.template head<4>()).dot(Vec4<S>(p.template tail<4>()))));
     // Conversely a random point of the quadric (a·c = 0), scaled to h0h0* + h1h1* = 1, is in SO(4).
-    Vec4<S> a = unit4<S>(g), cc = unit4<S>(g);
+    Vec4<S> a = gaussianUnit4<S>(g), cc = gaussianUnit4<S>(g);
     cc -= a * a.dot(cc);
     const S scale = sqrt(a.squaredNorm() + cc.squaredNorm());
     const DoubleQuaternion<S> k(Quat<S>(a(0), a(1), a(2), a(3)), Quat<S>(cc(0), cc(1), cc(2), cc(3)));
@@ -293,7 +290,7 @@ template <class S> void so4WholeQuadric(Context& c) {
     const Mat4<S> Mk = kn.matrix();
     worstOrth = std::max<S>(worstOrth, maxAbs4<S>(Mat4<S>(Mk.transpose() * Mk - Mat4<S>::Identity())) + abs(Mk.determinant() - S(1)));
     // … with no exceptions: points of the exceptional 3-plane a = 0 too.
-    const Vec4<S> c0 = unit4<S>(g);
+    const Vec4<S> c0 = gaussianUnit4<S>(g);
     const DoubleQuaternion<S> inf(Quat<S>(S(0), S(0), S(0), S(0)), Quat<S>(c0(0), c0(1), c0(2), c0(3)));
     const Mat4<S> Mi = inf.matrix();
     worstOrthA0 = std::max<S>(worstOrthA0, maxAbs4<S>(Mat4<S>(Mi.transpose() * Mi - Mat4<S>::Identity())) + abs(Mi.determinant() - S(1)));
@@ -303,7 +300,7 @@ template <class S> void so4WholeQuadric(Context& c) {
   c.checkResidual("every point of the quadric (normalised) is an SO(4) rotation", worstOrth, tol<S>(64));
   c.checkResidual("… including the exceptional 3-plane a = 0 (no exceptions)", worstOrthA0, tol<S>(64));
   // The somas that are not: h0 = 0 ⇔ the flag's e1 = −w (home flag e1 = w).
-  const Vec4<S> c0 = unit4<S>(g);
+  const Vec4<S> c0 = gaussianUnit4<S>(g);
   const DoubleQuaternion<S> inf(Quat<S>(S(0), S(0), S(0), S(0)), Quat<S>(c0(0), c0(1), c0(2), c0(3)));
   const Mat4<S> F = toFlagCoordinates<S>(inf.matrix());
   const OrientedFlag<S> homeImage(F.col(3), F.col(0), F.col(1));  // images of the home flag (w, x, y)
@@ -316,10 +313,10 @@ template <class S> void saletan(Context& c) {
   auto g = std::mt19937_64(1117);
   // A rigid motion as a unit dual quaternion q + εc (c = ½ t q).
   const Quat<S> q = unitQuat<S>(g);
-  const Vec3<S> t(uni<S>(g), uni<S>(g), uni<S>(g));
+  const Vec3<S> t = rv3<S>(g);
   const Quat<S> cq = detail::quatScale(quaternionProduct(detail::pureQuat<S>(t), q), S(1) / S(2));
   const SE3<S> motion(SO3<S>::fromQuaternion(q), t);
-  const Vec3<S> p(uni<S>(g), uni<S>(g), uni<S>(g));
+  const Vec3<S> p = rv3<S>(g);
   const Vec3<S> expected = motion.act(p);
   std::vector<S> errs;
   // r up to 10^maxExp while 1/r² stays well above the rounding floor (float: 100, double: 10⁶).
@@ -368,4 +365,4 @@ SOMA_STUDY_SCALAR("GF-11.1-SO4-is-whole-study-quadric", "SO(4) is the whole Stud
 SOMA_STUDY_SCALAR("GF-11.1-saletan-contraction", "σ² = 1/r², r → ∞: SO(4) contracts to SE(3)", "GF §11.1", saletan);
 
 }  // namespace
-}  // namespace soma::studies::gf11soma::SOMA_UNITY_ID
+}  // namespace soma::studies::gf11::SOMA_UNITY_ID

@@ -4,6 +4,7 @@
 // every path of a total-degree homotopy, and the study counts the regular finite solutions:
 // 6-3 platform 16, general 6-6 platform 40 (the tripod wrist, 8 and 6: GF-11.5.3-tripod-wrist-eight).
 // Double precision (PHCpack's).
+#include "gf11/common.hpp"
 #include "soma/geometry/study/constraint_quadrics.hpp"
 #include "soma/geometry/study/intersection_ring.hpp"
 #include "soma/studies/study.hpp"
@@ -23,15 +24,11 @@
 #include <sstream>
 #include <unistd.h>
 
-namespace soma::studies::gf11phc::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
+namespace soma::studies::gf11::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
 using S = double;
-constexpr const char* kChapter = "GF 11 — The Study quadric";
-
-std::mt19937_64 rng(std::uint64_t seed) { return std::mt19937_64(seed); }
-double uni(std::mt19937_64& g) { return std::uniform_real_distribution<double>(-1, 1)(g); }
-Vec3<S> vec3(std::mt19937_64& g) { return Vec3<S>(uni(g), uni(g), uni(g)); }
+constexpr const char* kWhyDouble = "PHCpack, the independent solver, works in double";
 
 /// Leg lengths that a random real pose assembles (so the real pose must be among the solutions).
 std::vector<double> legLengths(const SE3<S>& pose, const std::vector<Vec3<S>>& base, const std::vector<Vec3<S>>& top) {
@@ -63,19 +60,19 @@ void countsByPhcpack(Context& c) {
     const int legs = 6;
     std::vector<Vec3<S>> base, top;
     std::vector<Vec3<S>> distinct;
-    for (int i = 0; i < k.distinctTop; ++i) distinct.push_back(vec3(g));
+    for (int i = 0; i < k.distinctTop; ++i) distinct.push_back(rv3<S>(g));
     for (int i = 0; i < legs; ++i) {
-      base.push_back(vec3(g));
+      base.push_back(rv3<S>(g));
       top.push_back(distinct[std::size_t(i * k.distinctTop / legs)]);
     }
     const SO3<S> R = SO3<S>::Random(g);
-    const SE3<S> pose(R, vec3(g));
+    const SE3<S> pose(R, rv3<S>(g));
     const std::vector<double> L = legLengths(pose, base, top);
     std::vector<std::string> eqs;
     std::vector<Mat8<S>> quadrics;
     for (int i = 0; i < legs; ++i) quadrics.push_back(sphereConstraintQuadric<S>(base[i], top[i], L[i]));
     Eigen::VectorXd w(8);
-    for (Eigen::Index i = 0; i < w.size(); ++i) w(i) = uni(g);
+    for (Eigen::Index i = 0; i < w.size(); ++i) w(i) = uni<S>(g);
     for (const auto& Q : quadrics) eqs.push_back(phcQuadric(Q, x8));
     eqs.push_back(phcQuadric(Qs, x8));
     eqs.push_back(phcLinear(w, x8, 1.0));
@@ -124,12 +121,12 @@ void tripodWrist(Context& c) {
   for (const bool planar : {false, true}) {
     std::vector<Vec3<S>> base, top;
     for (int i = 0; i < 3; ++i) {
-      base.push_back(vec3(g));
-      top.push_back(vec3(g));
+      base.push_back(rv3<S>(g));
+      top.push_back(rv3<S>(g));
     }
     // A real pose in the subgroup, so that a real conformation exists.
-    const double th = uni(g) * 3;
-    const SE3<S> pose = planar ? SE3<S>(SO3<S>::fromAxisAngle(Vec3<S>::UnitZ(), th), Vec3<S>(uni(g), uni(g), 0))
+    const double th = uni<S>(g) * 3;
+    const SE3<S> pose = planar ? SE3<S>(SO3<S>::fromAxisAngle(Vec3<S>::UnitZ(), th), Vec3<S>(uni<S>(g), uni<S>(g), 0))
                                : SE3<S>(SO3<S>::Random(g), Vec3<S>::Zero());
     const std::vector<double> L = legLengths(pose, base, top);
     // The coordinates of the A-plane in PR⁷ and their names.
@@ -147,7 +144,7 @@ void tripodWrist(Context& c) {
       eqs.push_back(phcQuadric(R, names));
     }
     Eigen::VectorXd w(4);
-    for (int i = 0; i < 4; ++i) w(i) = uni(g);
+    for (int i = 0; i < 4; ++i) w(i) = uni<S>(g);
     eqs.push_back(phcLinear(w, names, 1.0));
     const PhcResult run = solveWithPhc(eqs, names, planar ? "tripod-planar" : "tripod");
     int regular = 0, finite = 0;
@@ -192,7 +189,8 @@ SOMA_STUDY({.id = "GF-11.5.3-tripod-wrist-eight",
             .source = "GF §11.5.3",
             .chapter = kChapter,
             .scalarGeneric = false,
-            .run = tripodWrist});
+            .run = tripodWrist,
+            .whyDouble = kWhyDouble});
 
 }  // namespace
-}  // namespace soma::studies::gf11phc::SOMA_UNITY_ID
+}  // namespace soma::studies::gf11::SOMA_UNITY_ID

@@ -2,7 +2,9 @@
 // numerically — 40 complex postures of a general 6-6 platform, 16 of a 6-3 platform — by the
 // homotopy solver of geometry/parallel/stewart.hpp, and the real postures of one platform drawn;
 // SOMA-11.5.4-stewart-speed-accuracy: every method × the five scalars on random platforms.
-// Double precision except that study (the solver is tested in all five scalars in tests/geometry/parallel).
+// GF-11.5.4-stewart-forty, GF-11.5.2-6-3-stewart-sixteen and GF-11-fig-11.2 run in the asked scalar
+// (draws in double cast to S, gf11/common.hpp); their figures are drawn from the postures cast to double.
+#include "gf11/common.hpp"
 #include "soma/geometry/parallel/stewart.hpp"
 #include "soma/geometry/parallel/stewart_numeric.hpp"
 #include "soma/geometry/study/constraint_quadrics.hpp"
@@ -19,66 +21,65 @@
 #include <numbers>
 #include <random>
 
-namespace soma::studies::gf11stewart::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
+namespace soma::studies::gf11::SOMA_UNITY_ID {  // this file's own names in a unity batch (studies/CMakeLists.txt)
 namespace {
 
-using S = double;
+using S = double;  // the speed/accuracy study's cases (drawn and kept in double)
 namespace rd = soma::render;
-constexpr const char* kChapter = "GF 11 — The Study quadric";
 
-double uni(std::mt19937_64& g, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(g); }
-
-/// A random general platform (joints not coplanar) and the posture that defines its leg lengths.
-StewartPlatform<S> randomPlatform(std::mt19937_64& g, SE3<S>* pose) {
-  StewartPlatform<S> P;
+/// A random general platform (joints not coplanar) and the posture that defines its leg lengths, in
+/// W: joints and twist drawn in double and cast to W, the posture and leg lengths computed in W.
+template <class W> StewartPlatform<W> randomPlatform(std::mt19937_64& g, SE3<W>* pose) {
+  StewartPlatform<W> P;
   for (int i = 0; i < 6; ++i) {
-    P.base[i] = Vec3<S>(uni(g, -1, 1), uni(g, -1, 1), uni(g, -0.2, 0.2));
-    P.platform[i] = Vec3<S>(uni(g, -0.6, 0.6), uni(g, -0.6, 0.6), uni(g, -0.1, 0.1));
+    const W bx = uni<W>(g, -1, 1), by = uni<W>(g, -1, 1), bz = uni<W>(g, -0.2, 0.2);
+    const W qx = uni<W>(g, -0.6, 0.6), qy = uni<W>(g, -0.6, 0.6), qz = uni<W>(g, -0.1, 0.1);
+    P.base[i] = Vec3<W>(bx, by, bz);
+    P.platform[i] = Vec3<W>(qx, qy, qz);
   }
-  Vec6<S> xi;
-  xi << uni(g, -0.3, 0.3), uni(g, -0.3, 0.3), uni(g, -0.3, 0.3), uni(g, -0.2, 0.2), uni(g, -0.2, 0.2), uni(g, 0.8, 1.2);
-  *pose = SE3Tangent<S>(xi).exp();
-  P.legs = stewartLegLengths<S>(P, *pose);
+  Vec6<W> xi;
+  for (int k = 0; k < 6; ++k) xi(k) = k < 3 ? uni<W>(g, -0.3, 0.3) : k < 5 ? uni<W>(g, -0.2, 0.2) : uni<W>(g, 0.8, 1.2);
+  *pose = SE3Tangent<W>(xi).exp();
+  P.legs = stewartLegLengths<W>(P, *pose);
   return P;
 }
 
-double nearest(const StewartForwardSolution<S>& s, const SE3<S>& g) {
-  double best = 1e300;
-  for (const auto& h : s.postures) best = std::min(best, (h.matrix() - g.matrix()).norm());
-  return best;
-}
-
 /// Non-real solutions whose conjugate is not in the set (0 for a real platform).
-int unpairedConjugates(const StewartForwardSolution<S>& s) {
+template <class W> int unpairedConjugates(const StewartForwardSolution<W>& s) {
   int n = 0;
   for (const auto& x : s.complex_solutions) {
-    double im = 0;
-    for (const auto& z : x) im = std::max(im, std::abs(z.imag()));
-    if (im > Tolerance<S>::input() && !containsConjugate<S>(s.complex_solutions, x, Tolerance<S>::input())) ++n;
+    W im = W(0);
+    using std::abs;
+    for (const auto& z : x) im = std::max<W>(im, W(abs(z.imag())));
+    if (im > Tolerance<W>::input() && !containsConjugate<W>(s.complex_solutions, x, Tolerance<W>::input())) ++n;
   }
   return n;
 }
 
-/// The platform of studies/platforms/general.json (irregular hexagons, joints off a plane).
-StewartPlatform<S> examplePlatform() {
-  StewartPlatform<S> P;
-  const double b[6][3] = {{0.854648, 0.248159, 0.002365},   {0.806715, 0.596192, -0.055343},
-                          {-0.668405, 0.732368, 0.056675},  {-0.954569, 0.316566, 0.053623},
-                          {-0.19489, -0.936848, -0.052013}, {0.304459, -1.079584, 0.063352}};
-  const double q[6][3] = {{0.48443, 0.136726, 0.018518},    {-0.142747, 0.423322, -0.024849},
-                          {-0.24425, 0.452013, 0.030514},   {-0.241091, -0.381148, -0.042368},
-                          {-0.196986, -0.460494, -0.020788}, {0.485676, -0.026128, 0.020398}};
-  const double L[6] = {1.042060141, 1.415693982, 1.051051562, 1.443082953, 0.974698497, 1.427782454};
+/// The platform of studies/platforms/general.json (irregular hexagons, joints off a plane), its
+/// decimals parsed in W.
+template <class W> StewartPlatform<W> examplePlatform() {
+  StewartPlatform<W> P;
+  const char* b[6][3] = {{"0.854648", "0.248159", "0.002365"},   {"0.806715", "0.596192", "-0.055343"},
+                         {"-0.668405", "0.732368", "0.056675"},  {"-0.954569", "0.316566", "0.053623"},
+                         {"-0.19489", "-0.936848", "-0.052013"}, {"0.304459", "-1.079584", "0.063352"}};
+  const char* q[6][3] = {{"0.48443", "0.136726", "0.018518"},    {"-0.142747", "0.423322", "-0.024849"},
+                         {"-0.24425", "0.452013", "0.030514"},   {"-0.241091", "-0.381148", "-0.042368"},
+                         {"-0.196986", "-0.460494", "-0.020788"}, {"0.485676", "-0.026128", "0.020398"}};
+  const char* L[6] = {"1.042060141", "1.415693982", "1.051051562", "1.443082953", "0.974698497", "1.427782454"};
   for (int i = 0; i < 6; ++i) {
-    P.base[i] = Vec3<S>(b[i][0], b[i][1], b[i][2]);
-    P.platform[i] = Vec3<S>(q[i][0], q[i][1], q[i][2]);
-    P.legs[i] = L[i];
+    P.base[i] = Vec3<W>(fromString<W>(b[i][0]), fromString<W>(b[i][1]), fromString<W>(b[i][2]));
+    P.platform[i] = Vec3<W>(fromString<W>(q[i][0]), fromString<W>(q[i][1]), fromString<W>(q[i][2]));
+    P.legs[i] = fromString<W>(L[i]);
   }
   return P;
 }
 
-/// The real postures of P drawn side by side: base (grey), legs (blue), platform (orange).
-void postureGrid(Context& c, const StewartPlatform<S>& P, const StewartForwardSolution<S>& s, const std::string& file) {
+/// The real postures of P drawn side by side: base (grey), legs (blue), platform (orange); the
+/// geometry cast to double for soma::render.
+template <class W>
+void postureGrid(Context& c, const StewartPlatform<W>& PW, const StewartForwardSolution<W>& s, const std::string& file) {
+  const StewartPlatform<double> P = PW.template cast<double>();
   rd::Scene scene;
   scene.title = fmt::format("The {} real postures of one general 6-6 platform (of 40 complex solutions) for the same six leg lengths",
                             s.count());
@@ -86,10 +87,11 @@ void postureGrid(Context& c, const StewartPlatform<S>& P, const StewartForwardSo
   const double dx = 3.0, dz = 2.9;
   for (std::size_t k = 0; k < s.count(); ++k) {
     const Eigen::Vector3d o(dx * double(k % cols), 0.0, -dz * double(k / cols));
+    const SE3<double> pk = s.postures[k].template cast<double>();
     std::vector<Eigen::Vector3d> base, top;
     for (int i = 0; i < 6; ++i) {
       base.push_back(P.base[i] + o);
-      top.push_back(s.postures[k].act(P.platform[i]) + o);
+      top.push_back(pk.act(P.platform[i]) + o);
     }
     gf11::addPlate(scene, base, rd::palette::darkGrey, 0.025);
     gf11::addPlate(scene, top, rd::palette::orange, 0.03, rd::palette::orange.withAlpha(0.45f));
@@ -104,7 +106,7 @@ void postureGrid(Context& c, const StewartPlatform<S>& P, const StewartForwardSo
     scene.add(rd::Points{top, rd::palette::vermillion, 0.04});
     rd::Label l;
     l.at = o + Eigen::Vector3d(0, 0, -1.2);
-    l.text = fmt::format("{}: residual {:.1e}", k + 1, s.residuals[k]);
+    l.text = fmt::format("{}: residual {:.1e}", k + 1, toDouble(s.residuals[k]));
     l.hAlign = rd::HAlign::Center;
     l.vAlign = rd::VAlign::Top;
     l.pixelHeight = 20;
@@ -123,109 +125,119 @@ void postureGrid(Context& c, const StewartPlatform<S>& P, const StewartForwardSo
                              s.count(), s.complexCount() - static_cast<int>(s.count())));
 }
 
-// GF §11.5.4, GF-11.5.4-stewart-forty
-void stewartForty(Context& c) {
+/// Distance (|ΔT|, 4×4) from g to the nearest real posture, in W (+∞ when there is none).
+template <class W> W nearestIn(const StewartForwardSolution<W>& s, const SE3<W>& g) {
+  W best = std::numeric_limits<W>::infinity();
+  for (const auto& h : s.postures) {
+    const W d = (h.matrix() - g.matrix()).norm();
+    if (d < best) best = d;
+  }
+  return best;
+}
+
+/// float128 and mpfr solve in software (1.6 s and 12 s a platform: SOMA-11.5.4-stewart-speed-accuracy):
+/// the random samples are smaller there, their size said in the check's name.
+template <class W> inline constexpr bool kSlowScalar = std::is_same_v<W, float128> || std::is_same_v<W, mpreal>;
+
+// GF §11.5.4, GF-11.5.4-stewart-forty, in the asked scalar W.
+template <class W> void stewartForty(Context& c) {
   // The start system: a random complex platform solved by the total-degree homotopy (128 paths).
-  const auto start = stewartStartPlatform<S>();
+  // stewartTotalDegreeSolve exists in double only (it computes the start solutions, which
+  // stewartStartSolutions<W> polishes in W): this part is the same in every scalar.
+  const auto start = stewartStartPlatform<double>();
   const auto a = stewartTotalDegreeSolve(start, 1);
   const auto b = stewartTotalDegreeSolve(start, 9);
-  c.checkEqual("random complex platform: finite solutions by a 2⁷ = 128-path total-degree homotopy", 40,
+  c.checkEqual("random complex platform: finite solutions by a 2⁷ = 128-path total-degree homotopy (double)", 40,
                static_cast<long long>(a.size()));
   int same = 0;
   for (const auto& x : b) {
     for (const auto& y : a) {
       double d = 0;
       for (int k = 0; k < 8; ++k) d = std::max(d, std::abs(x[k] - y[k]));
-      if (d <= Tolerance<S>::input()) {
+      if (d <= Tolerance<double>::input()) {
         ++same;
         break;
       }
     }
   }
-  c.checkEqual("… the same 40 points from another set of gammas", 40, same);
+  c.checkEqual("… the same 40 points from another set of gammas (double)", 40, same);
   // The Study quadric's leg form (study/constraint_quadrics.hpp) and the solver's agree.
   {
     std::mt19937_64 g(1154);
-    SE3<S> pose;
-    const auto P = randomPlatform(g, &pose);
-    const Vec8<S> v = StudyParameters<S>::fromSE3(pose).coeffs();
-    StudyPointC<S> x;
-    Vec8<S> w = v;
-    w(5) += 0.1;  // off the variety: both forms must agree there too
+    SE3<W> pose;
+    const auto P = randomPlatform<W>(g, &pose);
+    const Vec8<W> v = StudyParameters<W>::fromSE3(pose).coeffs();
+    StudyPointC<W> x;
+    Vec8<W> w = v;
+    w(5) += frac<W>(1, 10);  // off the variety: both forms must agree there too
     for (int k = 0; k < 8; ++k) x[k] = w(k);
-    const auto f = stewartSystem<S>(stewartComplexPlatform<S>(P), x);
-    double worst = 0;
+    const auto f = stewartSystem<W>(stewartComplexPlatform<W>(P), x);
+    W worst = W(0);
     for (int i = 0; i < 6; ++i) {
-      const Mat8<S> Q = sphereConstraintQuadric<S>(P.base[i], P.platform[i], P.legs[i]);
-      worst = std::max(worst, std::abs(f[i + 1].real() - w.dot(Q * w)));
+      const Mat8<W> Q = sphereConstraintQuadric<W>(P.base[i], P.platform[i], P.legs[i]);
+      using std::abs;
+      worst = std::max<W>(worst, W(abs(W(f[i + 1].real() - w.dot(Q * w)))));
     }
-    c.checkResidual("leg equation u·u − L²a·a = xᵀQx of the S–S sphere quadric (off the variety)", worst,
-                    Tolerance<S>::identity(256));
+    // two evaluations of one quadratic form of unit-scale entries (|w| ≈ 1): 256 ε (5.7e-14 in double)
+    c.checkResidual("leg equation u·u − L²a·a = xᵀQx of the S–S sphere quadric (off the variety; 256 ε)", worst,
+                    Tolerance<W>::identity(256));
   }
   // Random real general platforms.
   std::mt19937_64 g(2026);
-  const int n = 20;
+  const int n = kSlowScalar<W> ? 2 : 20;
   int forty = 0, found = 0, evenReal = 0, unpaired = 0;
-  double worstRes = 0, worstPose = 0;
+  W worstRes = W(0), worstPose = W(0);
   for (int t = 0; t < n; ++t) {
-    SE3<S> pose;
-    const auto P = randomPlatform(g, &pose);
-    const auto s = solveStewartForward<S>(P);
+    SE3<W> pose;
+    const auto P = randomPlatform<W>(g, &pose);
+    const auto s = solveStewartForward<W>(P);
     forty += s.complexCount() == 40;
-    found += nearest(s, pose) <= Tolerance<S>::sqrtEpsilon();
+    found += nearestIn(s, pose) <= Tolerance<W>::sqrtEpsilon();
     evenReal += s.count() % 2 == 0;
     unpaired += unpairedConjugates(s);
-    worstRes = std::max(worstRes, s.worstResidual());
-    worstPose = std::max(worstPose, nearest(s, pose));
+    worstRes = std::max<W>(worstRes, s.worstResidual());
+    worstPose = std::max<W>(worstPose, nearestIn(s, pose));
   }
   c.checkEqual(fmt::format("random real 6-6 platforms with 40 complex solutions (of {})", n), n, forty);
   c.checkEqual("… the posture that defined the leg lengths is among the real ones", n, found);
-  c.checkResidual("… distance of that posture (|ΔT|, 4×4) at worst", worstPose, Tolerance<S>::identity(1u << 14));
-  c.checkResidual("… worst leg-length residual / platform size over all real postures", worstRes,
-                  Tolerance<S>::identity(64));
+  // The posture is the solver's root polished in W: its distance from the defining posture is the
+  // root's conditioning times ε; 2¹⁴ ε (3.6e-12 in double, as before).
+  c.checkResidual("… distance of that posture (|ΔT|, 4×4) at worst (2¹⁴ ε)", worstPose, Tolerance<W>::identity(1u << 14));
+  c.checkResidual("… worst leg-length residual / platform size over all real postures (64 ε)", worstRes,
+                  Tolerance<W>::identity(64));
   c.checkEqual("… platforms with an even number of real postures", n, evenReal);
   c.checkEqual("… non-real solutions without their conjugate", 0, unpaired);
   // Extreme: base and platform planar. Still 40; real postures come in mirror pairs M g M.
   {
     std::mt19937_64 g2(41);
-    SE3<S> pose;
-    auto P = randomPlatform(g2, &pose);
-    for (int i = 0; i < 6; ++i) P.base[i](2) = P.platform[i](2) = 0;
-    P.legs = stewartLegLengths<S>(P, pose);
-    const auto s = solveStewartForward<S>(P);
+    SE3<W> pose;
+    auto P = randomPlatform<W>(g2, &pose);
+    for (int i = 0; i < 6; ++i) P.base[i](2) = P.platform[i](2) = W(0);
+    P.legs = stewartLegLengths<W>(P, pose);
+    const auto s = solveStewartForward<W>(P);
     c.checkEqual("planar base and planar platform: complex solutions", 40, s.complexCount());
-    const Mat3<S> Mz = Vec3<S>(1, 1, -1).asDiagonal();
-    double worst = 0;
+    const Mat3<W> Mz = Vec3<W>(1, 1, -1).asDiagonal();
+    W worst = W(0);
     for (const auto& h : s.postures) {
-      Mat4<S> m = Mat4<S>::Identity();
-      m.topLeftCorner<3, 3>() = Mz * h.rotation() * Mz;
-      m.topRightCorner<3, 1>() = Mz * h.translation();
-      double best = 1e300;
-      for (const auto& k : s.postures) best = std::min(best, (k.matrix() - m).norm());
-      worst = std::max(worst, best);
+      Mat4<W> m = Mat4<W>::Identity();
+      m.template topLeftCorner<3, 3>() = Mz * h.rotation() * Mz;
+      m.template topRightCorner<3, 1>() = Mz * h.translation();
+      W best = std::numeric_limits<W>::infinity();
+      for (const auto& k : s.postures) best = std::min<W>(best, W((k.matrix() - m).norm()));
+      worst = std::max<W>(worst, best);
     }
-    c.checkResidual(fmt::format("… its {} real postures pair up under the mirror in the base plane", s.count()), worst,
-                    Tolerance<S>::identity(1u << 14));
+    c.checkResidual(fmt::format("… its {} real postures pair up under the mirror in the base plane (2¹⁴ ε)", s.count()), worst,
+                    Tolerance<W>::identity(1u << 14));
   }
   // The example platform, drawn.
-  const auto P = examplePlatform();
-  const auto s = solveStewartForward<S>(P);
+  const auto P = examplePlatform<W>();
+  const auto s = solveStewartForward<W>(P);
   c.checkEqual("example platform (studies/platforms/general.json): complex solutions", 40, s.complexCount());
   // Regression value (soma's own earlier output); its independent source is PHCpack, which finds the
   // same real postures of general.json in SOMA-11.5-phcpack-counts.
   c.checkEqual("… real postures (regression value; PHCpack agrees in GF-11-fig-11.1)", 8,
                static_cast<long long>(s.count()));
   if (c.makeFigures() && s.count() > 0) postureGrid(c, P, s, "GF-11.5.4-stewart-postures.png");
-}
-
-/// Distance (|ΔT|, 4×4) from g to the nearest real posture, in W.
-template <class W> W nearestIn(const StewartForwardSolution<W>& s, const SE3<W>& g) {
-  W best = W(1e300);
-  for (const auto& h : s.postures) {
-    const W d = (h.matrix() - g.matrix()).norm();
-    if (d < best) best = d;
-  }
-  return best;
 }
 
 // GF §11.5.2, GF-11.5.2-6-3-stewart-sixteen, in the asked scalar W: the platforms are drawn in
@@ -300,7 +312,9 @@ template <class T> double poseDistance(const SE3<T>& a, const SE3<double>& b, do
 template <class T>
 TradeRow homotopyRow(const std::vector<Case>& cases, std::size_t n, std::size_t& short40,
                      std::vector<std::vector<SE3<S>>>* keep) {
-  TradeRow row{"homotopy", std::string(scalarName<T>())};
+  TradeRow row;
+  row.method = "homotopy";
+  row.scalar = std::string(scalarName<T>());
   if constexpr (std::is_same_v<T, mpfr::mpreal>) row.scalar += " (" + std::to_string(mpfrBits()) + " bits)";
   T worst = 0;
   std::vector<double> times;
@@ -338,7 +352,9 @@ TradeRow homotopyRow(const std::vector<Case>& cases, std::size_t n, std::size_t&
 template <class F>
 TradeRow numericRow(const std::string& name, const std::vector<Case>& cases, std::size_t n,
                     const std::vector<std::vector<SE3<S>>>& ref, std::size_t& outside, F&& solve) {
-  TradeRow row{name, "double"};
+  TradeRow row;
+  row.method = name;
+  row.scalar = "double";
   std::vector<double> times;
   std::size_t refTotal = 0, refFound = 0;
   const double same = Tolerance<S>::precision(2);
@@ -452,64 +468,79 @@ void speedAccuracy(Context& c) {
 // joints they form a rigid triangle that can only turn about the line through the two base
 // joints — a revolute joint there and a spherical joint at the apex (an R–S pair). The apex
 // therefore lies on a circle about that axis, of radius the triangle's height.
-void triangleFigure(Context& c) {
+template <class W> void triangleFigure(Context& c) {
+  using std::abs;
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
   std::mt19937_64 g(112);
-  SE3<S> pose;
-  auto P = randomPlatform(g, &pose);
-  const std::array<Vec3<S>, 3> t3{P.platform[0], P.platform[2], P.platform[4]};
+  SE3<W> pose;
+  auto P = randomPlatform<W>(g, &pose);
+  const std::array<Vec3<W>, 3> t3{P.platform[0], P.platform[2], P.platform[4]};
   for (int i = 0; i < 6; ++i) P.platform[i] = t3[((i + 1) / 2) % 3];  // as in sixThree: legs (1, 2) share a joint
-  P.legs = stewartLegLengths<S>(P, pose);
-  const Vec3<S> p1 = P.base[1], p2 = P.base[2], apex = pose.act(P.platform[1]);
-  const S L1 = P.legs[1], L2 = P.legs[2], d = (p2 - p1).norm();
-  const Vec3<S> u = (p2 - p1) / d;
-  const Vec3<S> foot = p1 + u * u.dot(apex - p1);
-  const S r = (apex - foot).norm();
+  P.legs = stewartLegLengths<W>(P, pose);
+  const Vec3<W> p1 = P.base[1], p2 = P.base[2], apex = pose.act(P.platform[1]);
+  const W L1 = P.legs[1], L2 = P.legs[2], d = (p2 - p1).norm();
+  const Vec3<W> u = (p2 - p1) / d;
+  const Vec3<W> foot = p1 + u * W(u.dot(apex - p1));
+  const W r = (apex - foot).norm();
   // Heron: the height of the triangle (L1, L2, d) over the side d.
-  const S sp = (L1 + L2 + d) / 2;
-  const S height = 2 * std::sqrt(sp * (sp - L1) * (sp - L2) * (sp - d)) / d;
-  c.checkResidual("radius of the apex circle = height of the leg triangle over the base side (Heron)", std::abs(r - height),
-                  Tolerance<S>::identity(64) * (L1 + L2 + d));
+  const W sp = (L1 + L2 + d) / W(2);
+  const W height = W(2) * sqrt(W(sp * (sp - L1) * (sp - L2) * (sp - d))) / d;
+  // The foot, the radius and Heron's product each carry a few roundings of lengths ≤ L1 + L2 + d: 64 ε.
+  c.checkResidual("radius of the apex circle = height of the leg triangle over the base side (Heron; 64 ε·(L1 + L2 + d))",
+                  W(abs(W(r - height))), W(Tolerance<W>::identity(64) * (L1 + L2 + d)));
   // Independently of the construction: every real posture the forward solver finds for this 6-3
   // platform (it knows nothing of the triangle) puts the shared joint on that circle — in the plane
   // through the foot normal to the axis, at the distance `height` from the axis. Bound: the solver's
   // leg residual (≤ 64 ε · size, checked in GF-11.5.4) over the sine of the triangle's angle at the
   // apex, times the 2 legs; measured: papers/checks.md.
   {
-    const auto sol = solveStewartForward<S>(P);
-    S worstCircle(0);
+    const auto sol = solveStewartForward<W>(P);
+    W worstCircle(0);
     for (const auto& h : sol.postures) {
-      const Vec3<S> a = h.act(P.platform[1]);
-      const S along = u.dot(a - foot), radial = (a - p1 - u * u.dot(a - p1)).norm();
-      worstCircle = std::max({worstCircle, S(std::abs(along)), S(std::abs(radial - height))});
+      const Vec3<W> a = h.act(P.platform[1]);
+      const W along = u.dot(a - foot), radial = (a - p1 - u * W(u.dot(a - p1))).norm();
+      worstCircle = std::max<W>({worstCircle, W(abs(along)), W(abs(W(radial - height)))});
     }
-    const S sinApex = height * d / (L1 * L2);  // sin of the apex angle = 2·area/(L1 L2)
+    const W sinApex = height * d / (L1 * L2);  // sin of the apex angle = 2·area/(L1 L2)
     c.checkResidual(fmt::format("the {} real postures of the forward solver put the shared joint on that circle "
                                 "(≤ 2·64 ε·(L1 + L2)/sin(apex angle))", sol.count()),
-                    worstCircle, Tolerance<S>::identity(128) * (L1 + L2) / sinApex);
+                    worstCircle, W(Tolerance<W>::identity(128) * (L1 + L2) / sinApex));
   }
   // Turning the triangle about the axis keeps both leg lengths: the R–S pair.
-  const Vec3<S> e1 = (apex - foot) / r, e2 = u.cross(e1);
-  double worst = 0;
-  std::vector<Eigen::Vector3d> circle;
+  const Vec3<W> e1 = (apex - foot) / r, e2 = u.cross(e1);
+  W worst = W(0);
+  std::vector<Vec3<W>> circle;
   for (int k = 0; k < 72; ++k) {
-    const double phi = 2 * std::numbers::pi * k / 72;
-    const Vec3<S> x = foot + r * (std::cos(phi) * e1 + std::sin(phi) * e2);
-    worst = std::max({worst, std::abs((x - p1).norm() - L1), std::abs((x - p2).norm() - L2)});
+    const W phi = W(2) * pi<W>() * W(k) / W(72);
+    const Vec3<W> x = foot + r * (cos(phi) * e1 + sin(phi) * e2);
+    worst = std::max<W>({worst, W(abs(W((x - p1).norm() - L1))), W(abs(W((x - p2).norm() - L2)))});
     circle.push_back(x);
   }
-  c.checkResidual("every point of the circle keeps both leg lengths (72 angles)", worst, Tolerance<S>::identity(64) * (L1 + L2));
+  c.checkResidual("every point of the circle keeps both leg lengths (72 angles; 64 ε·(L1 + L2))", worst,
+                  W(Tolerance<W>::identity(64) * (L1 + L2)));
   // And the apex positions with both leg lengths are only that circle: a point off the axis plane
-  // through the foot changes one length to first order.
-  const Vec3<S> off = apex + Tolerance<S>::sqrtEpsilon() * u;
-  c.checkEqual("moving the apex along the axis by √ε changes a leg length to first order", 1,
-               std::abs((off - p1).norm() - L1) + std::abs((off - p2).norm() - L2) >
-                       Tolerance<S>::identity(1024) * (L1 + L2)
+  // through the foot changes one length to first order (by √ε·cos, against the rounding of the two
+  // lengths, ≤ 8 ε·L each: 64 ε·(L1 + L2) leaves a margin of 4; 1024 ε before, which float's √ε cannot clear).
+  const Vec3<W> off = apex + Tolerance<W>::sqrtEpsilon() * u;
+  c.checkEqual("moving the apex along the axis by √ε changes a leg length to first order (> 64 ε·(L1 + L2))", 1,
+               W(abs(W((off - p1).norm() - L1)) + abs(W((off - p2).norm() - L2))) > Tolerance<W>::identity(64) * (L1 + L2)
                    ? 1
                    : 0);
   if (!c.makeFigures()) return;
+  // The figure: the geometry cast to double for soma::render.
+  const StewartPlatform<double> Pd = P.template cast<double>();
+  const SE3<double> posed = pose.template cast<double>();
+  std::array<Eigen::Vector3d, 3> t3d;
+  for (std::size_t k = 0; k < 3; ++k) t3d[k] = castMatrix<double>(t3[k]);
+  const Eigen::Vector3d p1d = castMatrix<double>(p1), p2d = castMatrix<double>(p2), apexd = castMatrix<double>(apex),
+                        footd = castMatrix<double>(foot);
+  std::vector<Eigen::Vector3d> circled;
+  for (const auto& x : circle) circled.push_back(castMatrix<double>(x));
   rd::Scene scene;
   scene.title = "GF Fig. 11.2: two legs of a 6-3 platform meet at one platform joint: an R-S pair";
-  std::vector<Eigen::Vector3d> base(P.base.begin(), P.base.end());
+  std::vector<Eigen::Vector3d> base(Pd.base.begin(), Pd.base.end());
   rd::Tube bt;
   bt.p = base;
   bt.closed = true;
@@ -517,7 +548,7 @@ void triangleFigure(Context& c) {
   bt.c = rd::palette::darkGrey;
   scene.add(bt);
   std::vector<Eigen::Vector3d> tri;
-  for (const auto& q : t3) tri.push_back(pose.act(q));
+  for (const auto& q : t3d) tri.push_back(posed.act(q));
   rd::Mesh plate;
   plate.v = tri;
   plate.tri.push_back(Eigen::Vector3i(0, 1, 2));
@@ -525,30 +556,30 @@ void triangleFigure(Context& c) {
   scene.add(plate);
   for (int i = 0; i < 6; ++i) {
     rd::Tube leg;
-    leg.p = {base[i], pose.act(P.platform[i])};
+    leg.p = {base[i], posed.act(Pd.platform[i])};
     const bool pair = i == 1 || i == 2;
     leg.radius = pair ? 0.022 : 0.008;
     leg.c = pair ? rd::palette::blue : rd::palette::lightGrey;
     scene.add(leg);
   }
   rd::Tube axis;  // the equivalent revolute axis through the two base joints
-  axis.p = {p1 - 0.35 * (p2 - p1), p2 + 0.35 * (p2 - p1)};
+  axis.p = {p1d - 0.35 * (p2d - p1d), p2d + 0.35 * (p2d - p1d)};
   axis.radius = 0.01;
   axis.c = rd::palette::vermillion;
   scene.add(axis);
   rd::Tube ring;  // where the apex can go: the circle about the axis
-  ring.p = circle;
+  ring.p = circled;
   ring.closed = true;
   ring.radius = 0.007;
   ring.c = rd::palette::orange;
   scene.add(ring);
   rd::Tube h;  // the triangle's height: the radius of that circle
-  h.p = {foot, apex};
+  h.p = {footd, apexd};
   h.radius = 0.005;
   h.c = rd::palette::darkGrey;
   scene.add(h);
-  scene.add(rd::Points{{p1, p2}, rd::palette::vermillion, 0.035});
-  scene.add(rd::Points{{apex}, rd::palette::blue, 0.045});
+  scene.add(rd::Points{{p1d, p2d}, rd::palette::vermillion, 0.035});
+  scene.add(rd::Points{{apexd}, rd::palette::blue, 0.045});
   const auto label = [&](const Eigen::Vector3d& at, const std::string& text) {
     rd::Label l;
     l.at = at;
@@ -556,24 +587,24 @@ void triangleFigure(Context& c) {
     l.pixelHeight = 20;
     scene.add(l);
   };
-  label(p1 + 0.7 * (p2 - p1) + Eigen::Vector3d(0, 0, -0.12), "revolute axis");
-  label(apex + Eigen::Vector3d(0, 0, 0.08), "spherical joint (shared platform joint)");
-  label(circle[36] + Eigen::Vector3d(0, 0, -0.08), "circle of the apex");
+  label(p1d + 0.7 * (p2d - p1d) + Eigen::Vector3d(0, 0, -0.12), "revolute axis");
+  label(apexd + Eigen::Vector3d(0, 0, 0.08), "spherical joint (shared platform joint)");
+  label(circled[36] + Eigen::Vector3d(0, 0, -0.08), "circle of the apex");
   const std::string f = "GF-11-fig-11.2.png";
   rd::renderPng(scene, Eigen::Vector3d(0.35, 1.0, -0.45), {1200, 900}, c.figurePath(f));
   c.figure(f, fmt::format("Two legs (blue) of a 6-3 platform share a platform joint; with the line through their "
                           "base joints (red) they form a rigid triangle that turns about that line: a revolute joint "
                           "and a spherical joint. The apex moves on the orange circle, of radius the triangle's "
-                          "height {:.4f} (Heron).", height));
+                          "height {:.4f} (Heron).", toDouble(height)));
 }
 
-SOMA_STUDY_DOUBLE("GF-11.5.4-stewart-forty",
-            "General 6-6 Stewart platform: 40 complex forward-kinematics solutions (homotopy), real postures drawn",
-            "GF §11.5.4", stewartForty);
+SOMA_STUDY_SCALAR("GF-11.5.4-stewart-forty",
+                  "General 6-6 Stewart platform: 40 complex forward-kinematics solutions (homotopy), real postures drawn",
+                  "GF §11.5.4", stewartForty);
 SOMA_STUDY_SCALAR("GF-11.5.2-6-3-stewart-sixteen", "6-3 Stewart platform: 16 postures (the other 24 paths end singular)",
-            "GF §11.5.2", sixThree);
-SOMA_STUDY_DOUBLE("GF-11-fig-11.2", "Fig. 11.2: two legs of a 6-3 platform sharing a joint form an R-S pair", "GF §11.5.2",
-            triangleFigure);
+                  "GF §11.5.2", sixThree);
+SOMA_STUDY_SCALAR("GF-11-fig-11.2", "Fig. 11.2: two legs of a 6-3 platform sharing a joint form an R-S pair", "GF §11.5.2",
+                  triangleFigure);
 SOMA_STUDY({.id = "SOMA-11.5.4-stewart-speed-accuracy",
             .title = "Stewart-Gough forward kinematics: every method × scalar, time, worst residual, completeness",
             .source = "GF §11.5.4",
@@ -583,4 +614,4 @@ SOMA_STUDY({.id = "SOMA-11.5.4-stewart-speed-accuracy",
             .ladder = true});
 
 }  // namespace
-}  // namespace soma::studies::gf11stewart::SOMA_UNITY_ID
+}  // namespace soma::studies::gf11::SOMA_UNITY_ID

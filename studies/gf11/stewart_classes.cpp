@@ -5,6 +5,7 @@
 // quadrics; the two counts of finite regular solutions must agree with each other and with the
 // class's count in stewart_class.hpp. Patterns that are architecturally singular are refused.
 // Double precision (PHCpack's); the homotopy in the other scalars is tested in tests/geometry/parallel.
+#include "gf11/common.hpp"
 #include "soma/algebra/errors.hpp"
 #include "soma/geometry/parallel/stewart.hpp"
 #include "soma/geometry/parallel/stewart_class.hpp"
@@ -23,12 +24,11 @@
 #include <random>
 #include <set>
 
-namespace soma::studies::gf11classes::SOMA_UNITY_ID {  // this file's own names in a unity batch
+namespace soma::studies::gf11::SOMA_UNITY_ID {  // this file's own names in a unity batch
 namespace {
 
 using S = double;
 
-double uni(std::mt19937_64& g, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(g); }
 
 /// Every assignment of 6 legs to k joints (restricted growth strings: joint of leg i ≤ 1 + max before).
 std::vector<std::array<int, 6>> assignments(int k) {
@@ -52,15 +52,15 @@ std::vector<std::array<int, 6>> assignments(int k) {
 /// random posture (so that posture is a real solution).
 StewartPlatform<S> platformOf(const std::array<int, 6>& b, const std::array<int, 6>& q, std::mt19937_64& g, SE3<S>* pose) {
   std::array<Vec3<S>, 6> B, Q;
-  for (auto& v : B) v = Vec3<S>(uni(g, -1, 1), uni(g, -1, 1), uni(g, -0.3, 0.3));
-  for (auto& v : Q) v = Vec3<S>(uni(g, -0.6, 0.6), uni(g, -0.6, 0.6), uni(g, -0.2, 0.2));
+  for (auto& v : B) v = Vec3<S>(uni<S>(g, -1, 1), uni<S>(g, -1, 1), uni<S>(g, -0.3, 0.3));
+  for (auto& v : Q) v = Vec3<S>(uni<S>(g, -0.6, 0.6), uni<S>(g, -0.6, 0.6), uni<S>(g, -0.2, 0.2));
   StewartPlatform<S> P;
   for (std::size_t i = 0; i < 6; ++i) {
     P.base[i] = B[static_cast<std::size_t>(b[i])];
     P.platform[i] = Q[static_cast<std::size_t>(q[i])];
   }
   Vec6<S> xi;
-  xi << uni(g, -0.3, 0.3), uni(g, -0.3, 0.3), uni(g, -0.3, 0.3), uni(g, -0.2, 0.2), uni(g, -0.2, 0.2), uni(g, 0.8, 1.2);
+  xi << uni<S>(g, -0.3, 0.3), uni<S>(g, -0.3, 0.3), uni<S>(g, -0.3, 0.3), uni<S>(g, -0.2, 0.2), uni<S>(g, -0.2, 0.2), uni<S>(g, 0.8, 1.2);
   *pose = SE3Tangent<S>(xi).exp();
   P.legs = stewartLegLengths<S>(P, *pose);
   return P;
@@ -80,7 +80,7 @@ struct PhcJob {
 };
 PhcJob phcJob(const StewartPlatform<S>& P, std::mt19937_64& g, const std::string& tag, int compare) {
   Eigen::VectorXd w(8);
-  for (Eigen::Index i = 0; i < 8; ++i) w(i) = uni(g, -1, 1);
+  for (Eigen::Index i = 0; i < 8; ++i) w(i) = uni<S>(g, -1, 1);
   return PhcJob{stewart_phc::equations(P, w), tag, compare};
 }
 PhcCount phcCount(const PhcJob& job) {
@@ -169,7 +169,7 @@ void stewartClasses(Context& c) {
   // permutation (random radii and half-angles, leg lengths from a random posture).
   int hexapodAgree = 0, hexapodTab = 0;
   for (int t = 0; t < 2; ++t) {
-    const double wb = uni(g, 5, 25), wq = uni(g, 25, 55), rq = uni(g, 0.4, 0.8), phase = uni(g, -10, 10);
+    const double wb = uni<S>(g, 5, 25), wq = uni<S>(g, 25, 55), rq = uni<S>(g, 0.4, 0.8), phase = uni<S>(g, -10, 10);
     const double deg = std::numbers::pi / 180;
     StewartPlatform<S> P;
     std::array<Vec3<S>, 6> q;
@@ -181,7 +181,7 @@ void stewartClasses(Context& c) {
       }
     for (std::size_t i = 0; i < 6; ++i) P.platform[i] = q[(i + 5) % 6];
     Vec6<S> xi;
-    xi << uni(g, -0.3, 0.3), uni(g, -0.3, 0.3), uni(g, -0.3, 0.3), uni(g, -0.2, 0.2), uni(g, -0.2, 0.2), uni(g, 0.8, 1.2);
+    xi << uni<S>(g, -0.3, 0.3), uni<S>(g, -0.3, 0.3), uni<S>(g, -0.3, 0.3), uni<S>(g, -0.2, 0.2), uni<S>(g, -0.2, 0.2), uni<S>(g, 0.8, 1.2);
     P.legs = stewartLegLengths<S>(P, SE3Tangent<S>(xi).exp());
     const auto cls = classifyStewart<S>(P);
     const auto sol = solveStewartForward<S>(P);
@@ -208,10 +208,10 @@ void stewartClasses(Context& c) {
 SOMA_STUDY({.id = "SOMA-11.5-stewart-classes",
             .title = "Stewart platforms with shared joints (6-5, 6-4, 5-5, 4-4, 6-3, 3-3): every class's count by the homotopy and PHCpack",
             .source = "GF §11.5.2–11.5.4; Faugère & Lazard 1995",
-            .chapter = "GF 11 — The Study quadric",
+            .chapter = kChapter,
             .scalarGeneric = false,
             .run = stewartClasses,
             .whyDouble = "PHCpack (an external program) reads and solves the systems in double"});
 
 }  // namespace
-}  // namespace soma::studies::gf11classes::SOMA_UNITY_ID
+}  // namespace soma::studies::gf11::SOMA_UNITY_ID
