@@ -66,12 +66,7 @@ template <class D> typename D::Scalar maxAbs(const Eigen::MatrixBase<D>& m) {
   return r;
 }
 using draws::maxOf;  // max(a, b), propagating NaN: soma/studies/scalar_draws.hpp
-/// xⁿ by repeated multiplication (std::pow(float, int) would return double).
-template <class S> S ipow(const S& x, int n) {
-  S r(1);
-  for (int k = 0; k < n; ++k) r *= x;
-  return r;
-}
+using draws::ipow;  // xⁿ in S: soma/studies/scalar_draws.hpp
 template <class S> S minOfPair(const S& a, const S& b) { return a < b ? a : b; }
 
 /// Matrix exponential by its power series, with scaling and squaring: the reference method

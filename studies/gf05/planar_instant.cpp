@@ -30,11 +30,7 @@ template <class S> S worstDerivative(const Setup<S>& s, int k, const std::vector
 }
 template <class S> Vec2<S> pt(long x10, long y10) { return Vec2<S>(frac<S>(x10, 10), frac<S>(y10, 10)); }
 template <class S> std::vector<Vec2<S>> samplePoints() { return {pt<S>(4, 17), pt<S>(-10, 20), pt<S>(25, -5), pt<S>(10, 10), pt<S>(-30, -20)}; }
-template <class S> S ipow(const S& x, int n) {
-  S r(1);
-  for (int i = 0; i < n; ++i) r *= x;
-  return r;
-}
+using draws::ipow;  // soma/studies/scalar_draws.hpp
 
 // GF §5.3.1, GF-5.3.1-lamina-derivatives (erratum E5.9)
 template <class S> void lamina(Context& c) {

@@ -24,12 +24,8 @@ using std::sin;
 using std::sqrt;
 
 using draws::frac;
-using draws::maxOf;  // soma/studies/scalar_draws.hpp
-template <class S> S minOf(const S& a, const S& b) {
-  if (!isFinite(a)) return a;
-  if (!isFinite(b)) return b;
-  return a < b ? a : b;
-}
+using draws::maxOf;
+using draws::minOf;  // soma/studies/scalar_draws.hpp
 
 /// Joint values uniform in [−3, 3], drawn in double (the same on every rung) and cast to S.
 template <class S> JointVector<S> randomQ(std::mt19937_64& g, int n) {

@@ -898,6 +898,8 @@ template <class S> PieperTriple<S> findPieperTriple(const SerialRobot<S>& robot)
       out.first = first;
       out.concurrent = false;
       out.direction = v[0];
+      using std::sqrt;
+      out.defect = sqrt(std::max<S>(v[0].cross(v[1]).squaredNorm(), v[0].cross(v[2]).squaredNorm()));
       return out;
     }
     // Concurrent axes are pairwise within 2 tol·L of each other (each is within tol·L of the common
@@ -916,6 +918,13 @@ template <class S> PieperTriple<S> findPieperTriple(const SerialRobot<S>& robot)
       out.first = first;
       out.concurrent = true;
       out.point = c;
+      S worst2(0);
+      for (int i = 0; i < 3; ++i) {
+        const Vec3<S> d = (c - r[i]) - v[i] * v[i].dot(c - r[i]);
+        worst2 = std::max<S>(worst2, d.squaredNorm());
+      }
+      using std::sqrt;
+      out.defect = sqrt(worst2) / robot.lengthScale();
       return out;
     }
   }

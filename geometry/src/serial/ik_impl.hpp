@@ -235,25 +235,36 @@ template <class S> IkSolution<S> solveIk(const SerialRobot<S>& robot, const SE3<
     if (rank < 6) return selfMotionAnswer<S>(robot, pose, rank, opt.method);
   }
   if (opt.method == IkMethod::Auto) opt.method = classifyRobot(robot);
+  // A robot near, not exactly, Pieper (a calibrated arm whose axes miss meeting or being parallel by
+  // more than rounding, less than the classification's Tolerance::input()) is the general 6R it is:
+  // the closed form of its idealised robot would miss the pose by about the defect and can lose
+  // postures (in float, input() = 2.2e-2 classes a 1e-3 calibration error as Pieper: 4 or 6 of 8
+  // postures, SOMA-6R-calibration-sweep --scalar float). The threshold is 256 ulps of the length
+  // scale: axes built in S (from DH rows, or a file's decimals) meet or are parallel to a few ulps.
+  const PieperTriple<S> tri = options.method == IkMethod::Auto && opt.method == IkMethod::Pieper ? findPieperTriple(robot) : PieperTriple<S>{};
+  const bool nearPieper = tri.first >= 0 && !(tri.defect <= Tolerance<S>::identity(256));
+  if (nearPieper) opt.method = IkMethod::General6R;
   IkSolution<S> sol;
-  if (opt.method == IkMethod::General6R || opt.method == IkMethod::Ceres || opt.method == IkMethod::Nlopt) {
+  if (nearPieper) {
+    sol = general6R<S>(robot, pose, opt);
+    sol.notes.push_back("the axes " + std::to_string(tri.first + 1) + "–" + std::to_string(tri.first + 3) + (tri.concurrent ? " miss a common point by " : " miss being parallel by ") +
+                        toString(tri.defect, 3) + (tri.concurrent ? " of the length scale" : " rad") +
+                        " (the robot is near, not exactly, a Pieper robot): solved as a general 6R");
+  } else if (opt.method == IkMethod::General6R || opt.method == IkMethod::Ceres || opt.method == IkMethod::Nlopt) {
     sol = general6R<S>(robot, pose, opt);
   } else {
     static_cast<Solution<S>&>(sol) = solveClosedForm<S>(robot, pose, opt.method);
     sol.certified = true;
-    // A robot near, not exactly, Pieper (a calibrated arm whose wrist axes miss by less than the
-    // classification's tolerance) is solved by the closed form of its idealised robot: its
-    // postures then miss the pose by about the defect (SOMA-6R-calibration-sweep found 6.6e-3 at
-    // a DH error of 1e-6). When the auto-chosen closed form misses by more than 4096 ulps, the
-    // robot is solved as the general 6R it is.
+    // The safety net behind the defect test above: a closed form that misses the pose by more than
+    // 4096 ulps, or finds no posture (an empty answer has no residual to miss by), is replaced by
+    // the general 6R's answer.
     if (options.method == IkMethod::Auto && opt.method == IkMethod::Pieper &&
-        !(sol.worstResidual() <= Tolerance<S>::identity(4096))) {
-      const std::string missed = toString(sol.worstResidual(), 3);
+        (sol.count() == 0 || !(sol.worstResidual() <= Tolerance<S>::identity(4096)))) {
+      const std::string missed = sol.count() == 0 ? std::string("found no posture") : "missed the pose by " + toString(sol.worstResidual(), 3);
       IkOptions g = opt;
       g.method = IkMethod::General6R;
       sol = general6R<S>(robot, pose, g);
-      sol.notes.push_back("the Pieper closed form missed the pose by " + missed +
-                          " (the robot is near, not exactly, a Pieper robot): solved as a general 6R");
+      sol.notes.push_back("the Pieper closed form " + missed + ": solved as a general 6R");
     }
   }
   if (robot.dof() == 6) sol.generic_rank = 6;

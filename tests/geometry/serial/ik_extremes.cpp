@@ -6,6 +6,7 @@
 #include "soma/geometry/serial/closed_form_ik.hpp"
 #include "soma/geometry/serial/example_robots.hpp"
 #include "soma/geometry/serial/general_6r.hpp"
+#include "soma/geometry/serial/ik.hpp"
 
 #include "support/scalars.hpp"
 
@@ -248,6 +249,45 @@ TEST_CASE("IK extremes: nearly parallel axes 2-4 across the Pieper threshold",
       q(4) = uniform<S>(g, 0.3, 2.8);
       INFO("α3 = " << e << ", class " << ikMethodName(classifyRobot(robot)));
       roundTrip(robot, q, tol4096<S>(), 1e-7);
+    }
+  }
+}
+
+// solveIk's auto mode on a PUMA whose wrist axes miss a common point by a5 = e: classified Pieper
+// on both sides (e < Tolerance::input()·L), solved by the closed form while the triple's defect is
+// rounding (16 ulps of L) and as the general 6R above 256 ulps (2¹⁶ ulps of L) — in float too,
+// where input() = 2.2e-2 and the idealised closed form lost postures (SOMA-6R-calibration-sweep).
+// The count is the exact PUMA's at the same pose (the real postures move continuously with e).
+TEMPLATE_TEST_CASE("IK auto: near, not exactly, Pieper is solved as the general 6R, on both sides of 256 ulps",
+                   "[serial][ik][extreme][axes]", float, double, long double) {
+  using S = TestType;
+  auto& g = test::rng(814);
+  const S eps = Tolerance<S>::epsilon();
+  const S L = puma560Robot<S>().lengthScale();
+  for (int t = 0; t < 4; ++t) {
+    JointVector<S> q(6);
+    for (int i = 0; i < 6; ++i) q(i) = uniform<S>(g, -3, 3);
+    q(4) = uniform<S>(g, 0.3, 2.8);  // off the wrist singularity
+    q(2) = uniform<S>(g, 0.3, 1.2);  // off the elbow singularity
+    const auto exact = puma560Robot<S>();
+    const SE3<S> T0 = exact.fk(q);
+    const Solution<S> ref = solveClosedForm(exact, T0, IkMethod::Pieper);
+    for (const bool above : {false, true}) {
+      const S e = (above ? S(65536) : S(16)) * eps * L;
+      const auto robot = puma560Robot<S>(S(1), e);
+      REQUIRE(classifyRobot(robot) == IkMethod::Pieper);
+      const PieperTriple<S> tri = findPieperTriple(robot);
+      INFO("a5 = " << toDouble(e) << ", defect " << toDouble(tri.defect) << (above ? " (above" : " (below") << " 256 ulps)");
+      CHECK((tri.defect > Tolerance<S>::identity(256)) == above);
+      const SE3<S> T = robot.fk(q);
+      const IkSolution<S> sol = solveIk(robot, T, IkOptions{});
+      bool general = false;
+      for (const auto& n : sol.notes) general = general || n.find("near, not exactly, a Pieper robot") != std::string::npos;
+      CHECK(general == above);
+      CHECK(sol.count() == ref.count());
+      // q is known to the pose's accuracy over the smallest singular value of J(q) (as in roundTrip)
+      CHECK(nearest(sol, q) <= S(64) * tol4096<S>() / singularityMeasures(robot, q).smallestSingularValue);
+      for (std::size_t k = 0; k < sol.count(); ++k) CHECK(poseResidual(robot.fk(sol.postures[k]), T, robot.lengthScale()) <= tol4096<S>());
     }
   }
 }

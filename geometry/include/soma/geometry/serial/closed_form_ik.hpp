@@ -59,6 +59,10 @@ template <class S> struct PieperTriple {
   bool concurrent = true;  ///< axes meet in `point`; else parallel to `direction`
   Vec3<S> point = Vec3<S>::Zero();
   Vec3<S> direction = Vec3<S>::Zero();
+  /// How far the triple is from exact: the largest distance of an axis from `point` over the
+  /// robot's length scale (concurrent), or the largest |v₀ × vᵢ| (parallel). Rounding-level for a
+  /// Pieper robot, up to Tolerance<S>::input() for a robot near one (a calibrated arm).
+  S defect = S(0);
 };
 /// Axes meet when each is within Tolerance<S>::input()·L of their common point; parallel when
 /// |v_i × v_j| ≤ Tolerance<S>::input(). Triples are tried in the order (4,5,6), (1,2,3), (2,3,4),

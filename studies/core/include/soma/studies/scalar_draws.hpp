@@ -38,6 +38,12 @@ template <class S> S minOf(const S& a, const S& b) {
   if (!isFinite(b)) return b;
   return b < a ? b : a;
 }
+/// xⁿ by repeated multiplication, in S (std::pow(float, int) would return double).
+template <class S> S ipow(const S& x, int n) {
+  S r(1);
+  for (int k = 0; k < n; ++k) r *= x;
+  return r;
+}
 /// The tolerance of a value printed with `decimals` decimals (the book's, the catalogue's): half a
 /// unit of its last digit, plus `ulps` ε of S times its magnitude `scale` for the rounding of the
 /// computation it is compared with.
