@@ -142,26 +142,43 @@ inline P factor(CM& A, Mk* piv, unsigned& swaps, double tau) {
   return sel(singular, splat(0), pmin / pmax);
 }
 
-/// b ← A⁻¹ b with the factors of `factor`.
-inline void solve(const CM& A, const Mk* piv, unsigned swaps, CV& b) {
+/// b[j] ← A⁻¹ b[j] for the N right-hand sides with the factors of `factor`, in one pass (the
+/// substitutions of the N are independent chains: interleaved, each waits less on the others' latency).
+template <int N> inline void solveN(const CM& A, const Mk* piv, unsigned swaps, CV* const* b) {
   for (int k = 0; k < 8; ++k) {
     if (swaps & (1u << k)) {
       const Mk p = piv[k];
       for (int r = k + 1; r < 8; ++r) {
         const Mk m = p == splatm(r);
         if (!any(m)) continue;
-        const C a = b[k];
-        b[k] = csel(m, b[r], a);
-        b[r] = csel(m, a, b[r]);
+        for (int j = 0; j < N; ++j) {
+          CV& x = *b[j];
+          const C a = x[k];
+          x[k] = csel(m, x[r], a);
+          x[r] = csel(m, a, x[r]);
+        }
       }
     }
-    for (int r = k + 1; r < 8; ++r) b[r] = b[r] - A[r][k] * b[k];
+    for (int r = k + 1; r < 8; ++r)
+      for (int j = 0; j < N; ++j) (*b[j])[r] = (*b[j])[r] - A[r][k] * (*b[j])[k];
   }
   for (int k = 7; k >= 0; --k) {
-    C s = b[k];
-    for (int c = k + 1; c < 8; ++c) s = s - A[k][c] * b[c];
-    b[k] = s * A[k][k];
+    C s[N];
+    for (int j = 0; j < N; ++j) s[j] = (*b[j])[k];
+    for (int c = k + 1; c < 8; ++c)
+      for (int j = 0; j < N; ++j) s[j] = s[j] - A[k][c] * (*b[j])[c];
+    for (int j = 0; j < N; ++j) (*b[j])[k] = s[j] * A[k][k];
   }
+}
+/// b ← A⁻¹ b with the factors of `factor`.
+inline void solve(const CM& A, const Mk* piv, unsigned swaps, CV& b) {
+  CV* const r[1] = {&b};
+  solveN<1>(A, piv, swaps, r);
+}
+/// b ← A⁻¹ b and c ← A⁻¹ c in one pass.
+inline void solve(const CM& A, const Mk* piv, unsigned swaps, CV& b, CV& c) {
+  CV* const r[2] = {&b, &c};
+  solveN<2>(A, piv, swaps, r);
 }
 
 /// The platform of Homotopy at τ, one τ per lane (φ = τ/(τ + γ(1 − τ)) is exactly 1 at τ = 1, and
@@ -439,6 +456,10 @@ inline void trackAll(const Homotopy& H, const V8* starts, int count, const Setti
     bool refactored[kLanes];
     for (int l = 0; l < kLanes; ++l)
       act[l] = live[l], ok[l] = refactored[l] = false, first[l] = prev[l] = rate[l] = 0, last[l] = 0;
+    // The tangents at the new points ride along (v = J⁻¹(−∂H/∂τ) at the second iterate yJ, refined
+    // once with J2 there): their right-hand sides are solved together with the Newton corrections
+    // of the second and third iterations (one pass of the substitutions for both).
+    bool tangentFromNewton = false, resolved = false;
     for (int it = 0; it < o.maxIterations; ++it) {
       if (it == 0) {
         eval(H, A, y, f, &J, nullptr);
@@ -482,7 +503,21 @@ inline void trackAll(const Homotopy& H, const V8* starts, int count, const Setti
           }
         }
       }
-      solve(J, piv, swaps, f);
+      if (it == 1) {
+        evalFt(H, A, yJ, U, ft);
+        for (auto& z : ft) z = -z;
+        v = ft;
+        solve(J, piv, swaps, f, v);
+        res = ft;
+        for (int i = 0; i < 8; ++i)
+          for (int k = 0; k < 8; ++k) res[i] = res[i] - J2[i][k] * v[k];
+        tangentFromNewton = true;
+      } else if (it == 2) {
+        solve(J, piv, swaps, f, res);
+        resolved = true;
+      } else {
+        solve(J, piv, swaps, f);
+      }
       const Mk am = maskOf(act);
       for (int k = 0; k < 8; ++k) y[k] = csel(am, y[k] - f[k], y[k]);
       const P fn = maxNorm(f), fs = sumNorm(f), yn = maxNorm(y);
@@ -525,9 +560,15 @@ inline void trackAll(const Homotopy& H, const V8* starts, int count, const Setti
       atFirst[l] = ok[l] && last[l] == 0;
       anyFirst = anyFirst || atFirst[l];
     }
-    if (anyOk) {
-      // The tangents at the new points: J⁻¹(−∂H/∂τ) with the step's LU, refined once with the
-      // Jacobian J2 of the last iterate (a lane accepted at once gets ∂H/∂τ and J2 at its new point).
+    if (anyOk && tangentFromNewton) {
+      // The tangents at the new points, begun with the second iteration (above): the refinement's
+      // correction, solved with the third iteration's or alone (a lane accepted at once had its
+      // ∂H/∂τ and J2 taken at its new point by the second iteration, which it sat out).
+      if (!resolved) solve(J, piv, swaps, res);
+      for (int k = 0; k < 8; ++k) v[k] = v[k] + res[k];
+    } else if (anyOk) {
+      // Every lane stopped at the first iteration: the tangents J⁻¹(−∂H/∂τ) with the step's LU,
+      // refined once with the Jacobian J2 (a lane accepted at once gets ∂H/∂τ and J2 at its new point).
       if (anyFirst) {
         CV f3;
         Us U3;
