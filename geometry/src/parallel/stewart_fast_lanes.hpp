@@ -263,6 +263,30 @@ inline void evalFt(const Homotopy& H, const At& A, const CV& x, const Us& U, CV&
   ft[7] = cpack({0, 0});
 }
 
+/// out = −(J(y₁) − J(y₀)) v, J = ∂H/∂x at one τ, from dy = y₁ − y₀ and the leg vectors U1, U0 that
+/// `eval` computed at y₁ and y₀: H is quadratic in x, so J is affine in x and the change is bilinear
+/// in (dy, v): for leg i, J_i(x) v = 2 u(x)·(M v) − 2L a(x)·a(v) (u = M x, a = x₀…₃); row 0 is the
+/// Study quadric a·b, row 7 the chart (constant). The tangent's refinement residual −∂H/∂τ − J(y₁) v
+/// when J(y₀) v = −∂H/∂τ, without forming J(y₁).
+inline void jacobianChangeTimes(const At& A, const CV& dy, const Us& U1, const Us& U0, const CV& v, CV& out) {
+  const C adv = dy[0] * v[0] + dy[1] * v[1] + dy[2] * v[2] + dy[3] * v[3];
+  out[0] = -(dy[4] * v[0] + dy[5] * v[1] + dy[6] * v[2] + dy[7] * v[3] + dy[0] * v[4] + dy[1] * v[5] + dy[2] * v[6] +
+             dy[3] * v[7]);
+  for (int i = 0; i < 6; ++i) {
+    const C* d = A.d[i];
+    const C* s = A.s[i];
+    const C m0 = 2.0 * v[4] - (v[1] * d[0] + v[2] * d[1] + v[3] * d[2]);
+    const C m1 = v[0] * d[0] + (v[2] * s[2] - v[3] * s[1]) + 2.0 * v[5];
+    const C m2 = v[0] * d[1] + (v[3] * s[0] - v[1] * s[2]) + 2.0 * v[6];
+    const C m3 = v[0] * d[2] + (v[1] * s[1] - v[2] * s[0]) + 2.0 * v[7];
+    const C* u1 = U1.u[i];
+    const C* u0 = U0.u[i];
+    out[i + 1] = -2.0 * ((u1[0] - u0[0]) * m0 + (u1[1] - u0[1]) * m1 + (u1[2] - u0[2]) * m2 + (u1[3] - u0[3]) * m3 -
+                         A.l[i] * adv);
+  }
+  out[7] = cpack({0, 0});
+}
+
 /// Newton at τ = 1 on up to kLanes endpoints (paths[0…count)), as the scalar tracker's polish: until the
 /// correction is at the rounding floor (64 eps), or stops decreasing (then it must already be below
 /// the tracking accuracy).
@@ -387,9 +411,9 @@ inline void load(Lanes& Q, Lane& L, int l) {
 /// Tracks the paths from `starts` (τ = 0) to τ = 1 and polishes their endpoints: out[i] for start i.
 inline void trackAll(const Homotopy& H, const V8* starts, int count, const Settings& o, Path* out) {
   const double hmin = Tolerance<double>::sqrtEpsilon();
-  CV f, ft, y, yJ, v, res;
+  CV f, ft, y, y0, yJ, v, res;
   CM J, J2, T2;
-  Us U;
+  Us U, U0;
   Mk piv[8], piv2[8];
   unsigned swaps = 0;
   At A;
@@ -457,12 +481,13 @@ inline void trackAll(const Homotopy& H, const V8* starts, int count, const Setti
     for (int l = 0; l < kLanes; ++l)
       act[l] = live[l], ok[l] = refactored[l] = false, first[l] = prev[l] = rate[l] = 0, last[l] = 0;
     // The tangents at the new points ride along (v = J⁻¹(−∂H/∂τ) at the second iterate yJ, refined
-    // once with J2 there): their right-hand sides are solved together with the Newton corrections
+    // once with the Jacobian there): their right-hand sides are solved together with the Newton corrections
     // of the second and third iterations (one pass of the substitutions for both).
     bool tangentFromNewton = false, resolved = false;
     for (int it = 0; it < o.maxIterations; ++it) {
       if (it == 0) {
-        eval(H, A, y, f, &J, nullptr);
+        eval(H, A, y, f, &J, &U0);
+        y0 = y;
         const P ratio = factor(J, piv, swaps, o.pivotThreshold);
         for (int l = 0; l < kLanes; ++l) {
           if (!act[l]) continue;
@@ -470,29 +495,31 @@ inline void trackAll(const Homotopy& H, const V8* starts, int count, const Setti
           if (!(ratio[l] > 0)) act[l] = false;
         }
       } else {
-        // The Jacobian J2 and the leg vectors U at the second iterate yJ only: the later iterations
-        // evaluate f alone; J2 serves the refactoring and the tangent's refinement, U the tangent's
-        // ∂H/∂τ (at yJ: within the second correction of the new point, far below what the predictor
-        // needs).
-        if (it == 1) {
-          eval(H, A, y, f, &J2, &U);
-          yJ = y;
-        } else {
-          eval(H, A, y, f, nullptr, nullptr);
-        }
+        // The leg vectors U at the second iterate yJ (the tangent's ∂H/∂τ and, with U0, its
+        // refinement: at yJ, within the second correction of the new point, far below what the
+        // predictor needs); the Jacobian J2 there only when a lane refactors.
         bool re[kLanes], anyRe = false;
         for (int l = 0; l < kLanes; ++l) {
           re[l] = act[l] && it >= 2 && rate[l] > o.refactorRate && !refactored[l];  // J2 is factored once
           anyRe = anyRe || re[l];
         }
+        if (it == 1) {
+          eval(H, A, y, f, nullptr, &U);
+          yJ = y;
+        } else {
+          eval(H, A, y, f, nullptr, nullptr);
+          if (anyRe) {  // the Jacobian at yJ, as the refactoring took it before
+            CV f2;
+            eval(H, A, yJ, f2, &J2, nullptr);
+          }
+        }
         if (anyRe) {  // slow linear convergence on some lane: a (nearly) full Newton step there
-          T2 = J2;
           unsigned swaps2;
-          const P ratio = factor(T2, piv2, swaps2, o.pivotThreshold);
+          const P ratio = factor(J2, piv2, swaps2, o.pivotThreshold);
           swaps |= swaps2;
           const Mk m = maskOf(re);
           for (int r = 0; r < 8; ++r) {
-            for (int c = 0; c < 8; ++c) J[r][c] = csel(m, T2[r][c], J[r][c]);
+            for (int c = 0; c < 8; ++c) J[r][c] = csel(m, J2[r][c], J[r][c]);
             piv[r] = selm(m, piv2[r], piv[r]);
           }
           for (int l = 0; l < kLanes; ++l) {
@@ -508,9 +535,9 @@ inline void trackAll(const Homotopy& H, const V8* starts, int count, const Setti
         for (auto& z : ft) z = -z;
         v = ft;
         solve(J, piv, swaps, f, v);
-        res = ft;
-        for (int i = 0; i < 8; ++i)
-          for (int k = 0; k < 8; ++k) res[i] = res[i] - J2[i][k] * v[k];
+        CV dy;
+        for (int k = 0; k < 8; ++k) dy[k] = yJ[k] - y0[k];
+        jacobianChangeTimes(A, dy, U, U0, v, res);  // ft − J(yJ) v, as J(y0) v = ft
         tangentFromNewton = true;
       } else if (it == 2) {
         solve(J, piv, swaps, f, res);
@@ -563,7 +590,7 @@ inline void trackAll(const Homotopy& H, const V8* starts, int count, const Setti
     if (anyOk && tangentFromNewton) {
       // The tangents at the new points, begun with the second iteration (above): the refinement's
       // correction, solved with the third iteration's or alone (a lane accepted at once had its
-      // ∂H/∂τ and J2 taken at its new point by the second iteration, which it sat out).
+      // ∂H/∂τ and U taken at its new point by the second iteration, which it sat out).
       if (!resolved) solve(J, piv, swaps, res);
       for (int k = 0; k < 8; ++k) v[k] = v[k] + res[k];
     } else if (anyOk) {
