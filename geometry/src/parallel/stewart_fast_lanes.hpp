@@ -208,6 +208,15 @@ struct Us {
   C u[6][4];
 };
 
+/// The leg vector u = M x of leg i (d, s its joints' difference and sum at τ): u₀ = −a_v·d + 2c₀,
+/// u_v = a₀ d + a_v × s + 2c_v, linear in x.
+inline void legU(const CV& x, const C* d, const C* s, C* u) {
+  u[0] = 2.0 * x[4] - (x[1] * d[0] + x[2] * d[1] + x[3] * d[2]);
+  u[1] = x[0] * d[0] + (x[2] * s[2] - x[3] * s[1]) + 2.0 * x[5];
+  u[2] = x[0] * d[1] + (x[3] * s[0] - x[1] * s[2]) + 2.0 * x[6];
+  u[3] = x[0] * d[2] + (x[1] * s[1] - x[2] * s[0]) + 2.0 * x[7];
+}
+
 /// f = H(x, τ) lane by lane, and (J non-null) J = ∂H/∂x, (U non-null) the leg vectors u for evalFt
 /// (u = a q + 2c − p a: u₀ = −a_v·d + 2c₀, u_v = a₀ d + a_v × s + 2c_v; leg i is u·u − L² a·a).
 inline void eval(const Homotopy& H, const At& A, const CV& x, CV& f, CM* J, Us* U) {
@@ -222,10 +231,9 @@ inline void eval(const Homotopy& H, const At& A, const CV& x, CV& f, CM* J, Us* 
     const C* d = A.d[i];
     const C* s = A.s[i];
     const C L = A.l[i];
-    const C u0 = 2.0 * x[4] - (x[1] * d[0] + x[2] * d[1] + x[3] * d[2]);
-    const C u1 = x[0] * d[0] + (x[2] * s[2] - x[3] * s[1]) + 2.0 * x[5];
-    const C u2 = x[0] * d[1] + (x[3] * s[0] - x[1] * s[2]) + 2.0 * x[6];
-    const C u3 = x[0] * d[2] + (x[1] * s[1] - x[2] * s[0]) + 2.0 * x[7];
+    C uv[4];
+    legU(x, d, s, uv);
+    const C u0 = uv[0], u1 = uv[1], u2 = uv[2], u3 = uv[3];
     f[i + 1] = u0 * u0 + u1 * u1 + u2 * u2 + u3 * u3 - L * aa;
     if (U) U->u[i][0] = u0, U->u[i][1] = u1, U->u[i][2] = u2, U->u[i][3] = u3;
     if (!J) continue;
@@ -273,16 +281,12 @@ inline void jacobianChangeTimes(const At& A, const CV& dy, const Us& U1, const U
   out[0] = -(dy[4] * v[0] + dy[5] * v[1] + dy[6] * v[2] + dy[7] * v[3] + dy[0] * v[4] + dy[1] * v[5] + dy[2] * v[6] +
              dy[3] * v[7]);
   for (int i = 0; i < 6; ++i) {
-    const C* d = A.d[i];
-    const C* s = A.s[i];
-    const C m0 = 2.0 * v[4] - (v[1] * d[0] + v[2] * d[1] + v[3] * d[2]);
-    const C m1 = v[0] * d[0] + (v[2] * s[2] - v[3] * s[1]) + 2.0 * v[5];
-    const C m2 = v[0] * d[1] + (v[3] * s[0] - v[1] * s[2]) + 2.0 * v[6];
-    const C m3 = v[0] * d[2] + (v[1] * s[1] - v[2] * s[0]) + 2.0 * v[7];
+    C m[4];
+    legU(v, A.d[i], A.s[i], m);
     const C* u1 = U1.u[i];
     const C* u0 = U0.u[i];
-    out[i + 1] = -2.0 * ((u1[0] - u0[0]) * m0 + (u1[1] - u0[1]) * m1 + (u1[2] - u0[2]) * m2 + (u1[3] - u0[3]) * m3 -
-                         A.l[i] * adv);
+    out[i + 1] = -2.0 * ((u1[0] - u0[0]) * m[0] + (u1[1] - u0[1]) * m[1] + (u1[2] - u0[2]) * m[2] +
+                         (u1[3] - u0[3]) * m[3] - A.l[i] * adv);
   }
   out[7] = cpack({0, 0});
 }
