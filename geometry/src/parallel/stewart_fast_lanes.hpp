@@ -142,26 +142,43 @@ inline P factor(CM& A, Mk* piv, unsigned& swaps, double tau) {
   return sel(singular, splat(0), pmin / pmax);
 }
 
-/// b ← A⁻¹ b with the factors of `factor`.
-inline void solve(const CM& A, const Mk* piv, unsigned swaps, CV& b) {
+/// b[j] ← A⁻¹ b[j] for the N right-hand sides with the factors of `factor`, in one pass (the
+/// substitutions of the N are independent chains: interleaved, each waits less on the others' latency).
+template <int N> inline void solveN(const CM& A, const Mk* piv, unsigned swaps, CV* const* b) {
   for (int k = 0; k < 8; ++k) {
     if (swaps & (1u << k)) {
       const Mk p = piv[k];
       for (int r = k + 1; r < 8; ++r) {
         const Mk m = p == splatm(r);
         if (!any(m)) continue;
-        const C a = b[k];
-        b[k] = csel(m, b[r], a);
-        b[r] = csel(m, a, b[r]);
+        for (int j = 0; j < N; ++j) {
+          CV& x = *b[j];
+          const C a = x[k];
+          x[k] = csel(m, x[r], a);
+          x[r] = csel(m, a, x[r]);
+        }
       }
     }
-    for (int r = k + 1; r < 8; ++r) b[r] = b[r] - A[r][k] * b[k];
+    for (int r = k + 1; r < 8; ++r)
+      for (int j = 0; j < N; ++j) (*b[j])[r] = (*b[j])[r] - A[r][k] * (*b[j])[k];
   }
   for (int k = 7; k >= 0; --k) {
-    C s = b[k];
-    for (int c = k + 1; c < 8; ++c) s = s - A[k][c] * b[c];
-    b[k] = s * A[k][k];
+    C s[N];
+    for (int j = 0; j < N; ++j) s[j] = (*b[j])[k];
+    for (int c = k + 1; c < 8; ++c)
+      for (int j = 0; j < N; ++j) s[j] = s[j] - A[k][c] * (*b[j])[c];
+    for (int j = 0; j < N; ++j) (*b[j])[k] = s[j] * A[k][k];
   }
+}
+/// b ← A⁻¹ b with the factors of `factor`.
+inline void solve(const CM& A, const Mk* piv, unsigned swaps, CV& b) {
+  CV* const r[1] = {&b};
+  solveN<1>(A, piv, swaps, r);
+}
+/// b ← A⁻¹ b and c ← A⁻¹ c in one pass.
+inline void solve(const CM& A, const Mk* piv, unsigned swaps, CV& b, CV& c) {
+  CV* const r[2] = {&b, &c};
+  solveN<2>(A, piv, swaps, r);
 }
 
 /// The platform of Homotopy at τ, one τ per lane (φ = τ/(τ + γ(1 − τ)) is exactly 1 at τ = 1, and
@@ -191,6 +208,15 @@ struct Us {
   C u[6][4];
 };
 
+/// The leg vector u = M x of leg i (d, s its joints' difference and sum at τ): u₀ = −a_v·d + 2c₀,
+/// u_v = a₀ d + a_v × s + 2c_v, linear in x.
+inline void legU(const CV& x, const C* d, const C* s, C* u) {
+  u[0] = 2.0 * x[4] - (x[1] * d[0] + x[2] * d[1] + x[3] * d[2]);
+  u[1] = x[0] * d[0] + (x[2] * s[2] - x[3] * s[1]) + 2.0 * x[5];
+  u[2] = x[0] * d[1] + (x[3] * s[0] - x[1] * s[2]) + 2.0 * x[6];
+  u[3] = x[0] * d[2] + (x[1] * s[1] - x[2] * s[0]) + 2.0 * x[7];
+}
+
 /// f = H(x, τ) lane by lane, and (J non-null) J = ∂H/∂x, (U non-null) the leg vectors u for evalFt
 /// (u = a q + 2c − p a: u₀ = −a_v·d + 2c₀, u_v = a₀ d + a_v × s + 2c_v; leg i is u·u − L² a·a).
 inline void eval(const Homotopy& H, const At& A, const CV& x, CV& f, CM* J, Us* U) {
@@ -205,10 +231,9 @@ inline void eval(const Homotopy& H, const At& A, const CV& x, CV& f, CM* J, Us* 
     const C* d = A.d[i];
     const C* s = A.s[i];
     const C L = A.l[i];
-    const C u0 = 2.0 * x[4] - (x[1] * d[0] + x[2] * d[1] + x[3] * d[2]);
-    const C u1 = x[0] * d[0] + (x[2] * s[2] - x[3] * s[1]) + 2.0 * x[5];
-    const C u2 = x[0] * d[1] + (x[3] * s[0] - x[1] * s[2]) + 2.0 * x[6];
-    const C u3 = x[0] * d[2] + (x[1] * s[1] - x[2] * s[0]) + 2.0 * x[7];
+    C uv[4];
+    legU(x, d, s, uv);
+    const C u0 = uv[0], u1 = uv[1], u2 = uv[2], u3 = uv[3];
     f[i + 1] = u0 * u0 + u1 * u1 + u2 * u2 + u3 * u3 - L * aa;
     if (U) U->u[i][0] = u0, U->u[i][1] = u1, U->u[i][2] = u2, U->u[i][3] = u3;
     if (!J) continue;
@@ -244,6 +269,26 @@ inline void evalFt(const Homotopy& H, const At& A, const CV& x, const Us& U, CV&
     ft[i + 1] = A.dphi * (2.0 * (u[0] * du0 + u[1] * du1 + u[2] * du2 + u[3] * du3) - g.dl * aa);
   }
   ft[7] = cpack({0, 0});
+}
+
+/// out = −(J(y₁) − J(y₀)) v, J = ∂H/∂x at one τ, from dy = y₁ − y₀ and the leg vectors U1, U0 that
+/// `eval` computed at y₁ and y₀: H is quadratic in x, so J is affine in x and the change is bilinear
+/// in (dy, v): for leg i, J_i(x) v = 2 u(x)·(M v) − 2L a(x)·a(v) (u = M x, a = x₀…₃); row 0 is the
+/// Study quadric a·b, row 7 the chart (constant). The tangent's refinement residual −∂H/∂τ − J(y₁) v
+/// when J(y₀) v = −∂H/∂τ, without forming J(y₁).
+inline void jacobianChangeTimes(const At& A, const CV& dy, const Us& U1, const Us& U0, const CV& v, CV& out) {
+  const C adv = dy[0] * v[0] + dy[1] * v[1] + dy[2] * v[2] + dy[3] * v[3];
+  out[0] = -(dy[4] * v[0] + dy[5] * v[1] + dy[6] * v[2] + dy[7] * v[3] + dy[0] * v[4] + dy[1] * v[5] + dy[2] * v[6] +
+             dy[3] * v[7]);
+  for (int i = 0; i < 6; ++i) {
+    C m[4];
+    legU(v, A.d[i], A.s[i], m);
+    const C* u1 = U1.u[i];
+    const C* u0 = U0.u[i];
+    out[i + 1] = -2.0 * ((u1[0] - u0[0]) * m[0] + (u1[1] - u0[1]) * m[1] + (u1[2] - u0[2]) * m[2] +
+                         (u1[3] - u0[3]) * m[3] - A.l[i] * adv);
+  }
+  out[7] = cpack({0, 0});
 }
 
 /// Newton at τ = 1 on up to kLanes endpoints (paths[0…count)), as the scalar tracker's polish: until the
@@ -370,9 +415,9 @@ inline void load(Lanes& Q, Lane& L, int l) {
 /// Tracks the paths from `starts` (τ = 0) to τ = 1 and polishes their endpoints: out[i] for start i.
 inline void trackAll(const Homotopy& H, const V8* starts, int count, const Settings& o, Path* out) {
   const double hmin = Tolerance<double>::sqrtEpsilon();
-  CV f, ft, y, yJ, v, res;
+  CV f, ft, y, y0, yJ, v, res;
   CM J, J2, T2;
-  Us U;
+  Us U, U0;
   Mk piv[8], piv2[8];
   unsigned swaps = 0;
   At A;
@@ -439,9 +484,14 @@ inline void trackAll(const Homotopy& H, const V8* starts, int count, const Setti
     bool refactored[kLanes];
     for (int l = 0; l < kLanes; ++l)
       act[l] = live[l], ok[l] = refactored[l] = false, first[l] = prev[l] = rate[l] = 0, last[l] = 0;
+    // The tangents at the new points ride along (v = J⁻¹(−∂H/∂τ) at the second iterate yJ, refined
+    // once with the Jacobian there): their right-hand sides are solved together with the Newton corrections
+    // of the second and third iterations (one pass of the substitutions for both).
+    bool tangentFromNewton = false, resolved = false;
     for (int it = 0; it < o.maxIterations; ++it) {
       if (it == 0) {
-        eval(H, A, y, f, &J, nullptr);
+        eval(H, A, y, f, &J, &U0);
+        y0 = y;
         const P ratio = factor(J, piv, swaps, o.pivotThreshold);
         for (int l = 0; l < kLanes; ++l) {
           if (!act[l]) continue;
@@ -449,29 +499,31 @@ inline void trackAll(const Homotopy& H, const V8* starts, int count, const Setti
           if (!(ratio[l] > 0)) act[l] = false;
         }
       } else {
-        // The Jacobian J2 and the leg vectors U at the second iterate yJ only: the later iterations
-        // evaluate f alone; J2 serves the refactoring and the tangent's refinement, U the tangent's
-        // ∂H/∂τ (at yJ: within the second correction of the new point, far below what the predictor
-        // needs).
-        if (it == 1) {
-          eval(H, A, y, f, &J2, &U);
-          yJ = y;
-        } else {
-          eval(H, A, y, f, nullptr, nullptr);
-        }
+        // The leg vectors U at the second iterate yJ (the tangent's ∂H/∂τ and, with U0, its
+        // refinement: at yJ, within the second correction of the new point, far below what the
+        // predictor needs); the Jacobian J2 there only when a lane refactors.
         bool re[kLanes], anyRe = false;
         for (int l = 0; l < kLanes; ++l) {
           re[l] = act[l] && it >= 2 && rate[l] > o.refactorRate && !refactored[l];  // J2 is factored once
           anyRe = anyRe || re[l];
         }
+        if (it == 1) {
+          eval(H, A, y, f, nullptr, &U);
+          yJ = y;
+        } else {
+          eval(H, A, y, f, nullptr, nullptr);
+          if (anyRe) {  // the Jacobian at yJ, as the refactoring took it before
+            CV f2;
+            eval(H, A, yJ, f2, &J2, nullptr);
+          }
+        }
         if (anyRe) {  // slow linear convergence on some lane: a (nearly) full Newton step there
-          T2 = J2;
           unsigned swaps2;
-          const P ratio = factor(T2, piv2, swaps2, o.pivotThreshold);
+          const P ratio = factor(J2, piv2, swaps2, o.pivotThreshold);
           swaps |= swaps2;
           const Mk m = maskOf(re);
           for (int r = 0; r < 8; ++r) {
-            for (int c = 0; c < 8; ++c) J[r][c] = csel(m, T2[r][c], J[r][c]);
+            for (int c = 0; c < 8; ++c) J[r][c] = csel(m, J2[r][c], J[r][c]);
             piv[r] = selm(m, piv2[r], piv[r]);
           }
           for (int l = 0; l < kLanes; ++l) {
@@ -482,7 +534,21 @@ inline void trackAll(const Homotopy& H, const V8* starts, int count, const Setti
           }
         }
       }
-      solve(J, piv, swaps, f);
+      if (it == 1) {
+        evalFt(H, A, yJ, U, ft);
+        for (auto& z : ft) z = -z;
+        v = ft;
+        solve(J, piv, swaps, f, v);
+        CV dy;
+        for (int k = 0; k < 8; ++k) dy[k] = yJ[k] - y0[k];
+        jacobianChangeTimes(A, dy, U, U0, v, res);  // ft − J(yJ) v, as J(y0) v = ft
+        tangentFromNewton = true;
+      } else if (it == 2) {
+        solve(J, piv, swaps, f, res);
+        resolved = true;
+      } else {
+        solve(J, piv, swaps, f);
+      }
       const Mk am = maskOf(act);
       for (int k = 0; k < 8; ++k) y[k] = csel(am, y[k] - f[k], y[k]);
       const P fn = maxNorm(f), fs = sumNorm(f), yn = maxNorm(y);
@@ -525,9 +591,15 @@ inline void trackAll(const Homotopy& H, const V8* starts, int count, const Setti
       atFirst[l] = ok[l] && last[l] == 0;
       anyFirst = anyFirst || atFirst[l];
     }
-    if (anyOk) {
-      // The tangents at the new points: J⁻¹(−∂H/∂τ) with the step's LU, refined once with the
-      // Jacobian J2 of the last iterate (a lane accepted at once gets ∂H/∂τ and J2 at its new point).
+    if (anyOk && tangentFromNewton) {
+      // The tangents at the new points, begun with the second iteration (above): the refinement's
+      // correction, solved with the third iteration's or alone (a lane accepted at once had its
+      // ∂H/∂τ and U taken at its new point by the second iteration, which it sat out).
+      if (!resolved) solve(J, piv, swaps, res);
+      for (int k = 0; k < 8; ++k) v[k] = v[k] + res[k];
+    } else if (anyOk) {
+      // Every lane stopped at the first iteration: the tangents J⁻¹(−∂H/∂τ) with the step's LU,
+      // refined once with the Jacobian J2 (a lane accepted at once gets ∂H/∂τ and J2 at its new point).
       if (anyFirst) {
         CV f3;
         Us U3;
