@@ -35,6 +35,7 @@
 #include <soma/algebra/screw.hpp>
 #include <soma/algebra/se2.hpp>
 #include <soma/algebra/se3.hpp>
+#include <soma/algebra/sin_cos.hpp>
 #include <soma/algebra/small_eigenvalues.hpp>
 #include <soma/algebra/small_linalg.hpp>
 #include <soma/algebra/so3.hpp>

@@ -8,6 +8,11 @@
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
 
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
+
 namespace SOMA_UNITY_ID {  // this file's names stay its own in a unity batch (tests/CMakeLists.txt)
 
 using namespace soma;
@@ -41,41 +46,49 @@ std::vector<std::pair<std::complex<double>, int>> match(const std::vector<std::c
   return out;
 }
 
+/// A = Q D Qᵀ with Q orthogonal (the QR of a random matrix) and D block diagonal: real eigenvalues
+/// and 2×2 blocks [[a, b], [−b, a]] (the pair a ± ib), at random. A is normal, so every eigenvalue's
+/// condition number is 1. Returns A and its spectrum.
+template <class S, class Rng>
+std::pair<Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>, std::vector<std::complex<S>>> normalWithSpectrum(Rng& g,
+                                                                                                             int n) {
+  using M = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>;
+  M d = M::Zero(n, n);
+  std::vector<std::complex<S>> want;
+  for (int i = 0; i < n;) {
+    if (i + 1 < n && test::uniform<double>(g) > 0) {
+      const S a = test::uniform<S>(g, -2, 2), b = test::uniform<S>(g, 0.1, 2);
+      d(i, i) = d(i + 1, i + 1) = a;
+      d(i, i + 1) = b;
+      d(i + 1, i) = -b;
+      want.emplace_back(a, b);
+      want.emplace_back(a, -b);
+      i += 2;
+    } else {
+      d(i, i) = test::uniform<S>(g, -2, 2);
+      want.emplace_back(d(i, i), S(0));
+      ++i;
+    }
+  }
+  M r(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) r(i, j) = test::uniform<S>(g);
+  const M q = Eigen::HouseholderQR<M>(r).householderQ();
+  return {q * d * q.transpose(), want};
+}
+
 }  // namespace
 
 TEMPLATE_TEST_CASE("small eigenvalues: normal matrices with a known spectrum, sizes 1 to 24", "[small_eigenvalues]",
                    float, double, long double) {
   using S = TestType;
-  using M = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>;
   using C = std::complex<S>;
   auto& g = test::rng(20261204);
   for (int n = 1; n <= 24; ++n)
     for (int trial = 0; trial < 4; ++trial) {
-      // A = Q D Qᵀ, Q orthogonal, D block diagonal: real eigenvalues and 2×2 blocks [[a, b], [−b, a]]
-      // (the pair a ± ib). A is normal, so every eigenvalue's condition number is 1 and the error
-      // of each is at most the backward error (plus the rounding of forming A, ~n eps ‖A‖).
-      M d = M::Zero(n, n);
-      std::vector<C> want;
-      for (int i = 0; i < n;) {
-        if (i + 1 < n && test::uniform<double>(g) > 0) {
-          const S a = test::uniform<S>(g, -2, 2), b = test::uniform<S>(g, 0.1, 2);
-          d(i, i) = d(i + 1, i + 1) = a;
-          d(i, i + 1) = b;
-          d(i + 1, i) = -b;
-          want.emplace_back(a, b);
-          want.emplace_back(a, -b);
-          i += 2;
-        } else {
-          d(i, i) = test::uniform<S>(g, -2, 2);
-          want.emplace_back(d(i, i), S(0));
-          ++i;
-        }
-      }
-      M r(n, n);
-      for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) r(i, j) = test::uniform<S>(g);
-      const M q = Eigen::HouseholderQR<M>(r).householderQ();
-      const M a = q * d * q.transpose();
+      // A normal: the error of each eigenvalue is at most the backward error (plus the rounding
+      // of forming A, ~n eps ‖A‖).
+      const auto [a, want] = normalWithSpectrum<S>(g, n);
       Eigen::Matrix<S, 24, 24> h = Eigen::Matrix<S, 24, 24>::Zero();
       h.topLeftCorner(n, n) = a;
       std::vector<C> got;
@@ -91,6 +104,44 @@ TEMPLATE_TEST_CASE("small eigenvalues: normal matrices with a known spectrum, si
         used[best] = true;
         INFO("n " << n << " eigenvalue " << toDouble(z.real()) << " + " << toDouble(z.imag()) << "i");
         CHECK(std::abs(z - want[best]) <= tol);
+      }
+    }
+}
+
+TEMPLATE_TEST_CASE("small eigenvalues: a matrix so small that p² + q² + r² leaves the normal range", "[small_eigenvalues]",
+                   float, double, long double) {
+  // The bulge steps form their reflectors without scaling when p² + q² + r² is at least
+  // min/eps (and finite); here every entry is ~2^e with e = (min_exponent + digits/2)/2, so every
+  // square is below min/eps (the products of two entries that form the shifts still normal) and
+  // the scaled path is taken at every step. (Entries whose squares overflow are out of HQR's range
+  // anyway: its shifts are products of two entries.) Scaling by a power of two is exact, so the
+  // spectrum is 2^e times the known one, and the error bound 2^e times the unscaled one.
+  using S = TestType;
+  using C = std::complex<S>;
+  auto& g = test::rng(20261205);
+  const int e = (std::numeric_limits<S>::min_exponent + std::numeric_limits<S>::digits / 2) / 2;
+  const S scale = std::ldexp(S(1), e);
+  for (int n = 3; n <= 16; ++n)
+    for (int trial = 0; trial < 2; ++trial) {
+      const auto [a, want] = normalWithSpectrum<S>(g, n);
+      Eigen::Matrix<S, 24, 24> h = Eigen::Matrix<S, 24, 24>::Zero();
+      h.topLeftCorner(n, n) = a * scale;
+      REQUIRE(h.cwiseAbs2().maxCoeff() < std::numeric_limits<S>::min() / Tolerance<S>::epsilon());
+      std::vector<C> got;
+      REQUIRE(detail::smallEigenvalues<S, 24>(h, n, got));
+      REQUIRE(int(got.size()) == n);
+      const S tol = S(n) * S(n + 1) * Tolerance<S>::epsilon() * a.norm();  // as above, before scaling
+      std::vector<bool> used(want.size(), false);
+      for (const auto& z : got) {
+        const C zu(z.real() / scale, z.imag() / scale);
+        int best = -1;
+        for (int j = 0; j < int(want.size()); ++j)
+          if (!used[j] && (best < 0 || std::abs(want[j] - zu) < std::abs(want[best] - zu))) best = j;
+        REQUIRE(best >= 0);
+        used[best] = true;
+        INFO("n " << n << " scale 2^" << e << " eigenvalue/scale " << toDouble(zu.real()) << " + "
+                  << toDouble(zu.imag()) << "i");
+        CHECK(std::abs(zu - want[best]) <= tol);
       }
     }
 }

@@ -7,6 +7,7 @@
 
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/polynomial.hpp"
+#include "soma/algebra/sin_cos.hpp"
 
 #include <Eigen/LU>
 
@@ -31,22 +32,6 @@ template <class S> Vec3<S> rotateAbout(const Vec3<S>& v, const S& c, const S& s,
   return c * w + s * v.cross(w) + ((S(1) - c) * v.dot(w)) * v;
 }
 
-
-/// sin and cos of one argument: one libm call (sincos) for float, double and long double.
-template <class S> inline void sinCos(const S& x, S& s, S& c) {
-  if constexpr (std::is_same_v<S, double>) {
-    ::sincos(x, &s, &c);
-  } else if constexpr (std::is_same_v<S, float>) {
-    ::sincosf(x, &s, &c);
-  } else if constexpr (std::is_same_v<S, long double>) {
-    ::sincosl(x, &s, &c);
-  } else {
-    using std::cos;
-    using std::sin;
-    s = sin(x);
-    c = cos(x);
-  }
-}
 
 /// An angle with its cosine and sine, carried together so that later steps need no sin or cos.
 template <class S> struct Angle {

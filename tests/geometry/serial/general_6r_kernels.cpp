@@ -1,8 +1,8 @@
 // The general-6R solver's hand-written numerical kernels (general_6r_impl.hpp, written for speed)
 // against Eigen's: the 12×12 LU's reciprocal condition estimate against PartialPivLU::rcond()
 // (the same Hager–Higham algorithm, so equal up to the rounding of two factorisations), and its
-// solves against PartialPivLU::solve, on random, nearly rank-deficient and badly row-scaled
-// matrices (fixed seed).
+// solves (one column, transposed, 24 columns at once) against PartialPivLU::solve, on random,
+// nearly rank-deficient and badly row-scaled matrices (fixed seed).
 #include "soma/geometry/serial/general_6r_impl.hpp"
 
 #include "support/scalars.hpp"
@@ -47,6 +47,17 @@ TEST_CASE("general 6R kernels: Lu12 rcond and solves agree with Eigen's PartialP
     CHECK((x - ref.solve(b)).norm() <= tol * x.norm());
     const V yRef = Eigen::PartialPivLU<M>(M(a.transpose())).solve(b);
     CHECK((y - yRef).norm() <= tol * y.norm());
+    // 24 right-hand sides at once (the companion block −A⁻¹[C B]): every column within the same
+    // bound of Eigen's solve.
+    Eigen::Matrix<double, 12, 24> bs;
+    for (int j = 0; j < 24; ++j) bs.col(j) = test::uniformVec<double, 12>(g);
+    Eigen::Matrix<double, 12, 24> xs = bs;
+    lu.solveColumns(xs);
+    const Eigen::Matrix<double, 12, 24> xsRef = ref.solve(bs);
+    for (int j = 0; j < 24; ++j) {
+      INFO("right-hand side " << j);
+      CHECK((xs.col(j) - xsRef.col(j)).norm() <= tol * xs.col(j).norm());
+    }
   }
 }
 

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <complex>
+#include <limits>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -58,7 +59,10 @@ template <class S, int N> void smallHessenbergGauss(Eigen::Matrix<S, N, N>& H, i
 }
 
 /// Eigenvalues of an upper Hessenberg n×n block of H (destroyed) by Francis double-shift QR steps
-/// (EISPACK HQR), exceptional shifts at the 10th and 20th iteration of an eigenvalue. Returns
+/// (EISPACK HQR), exceptional shifts at the 10th and 20th iteration of an eigenvalue. Each bulge
+/// step's reflector is formed from p² + q² + r² directly when that sum can neither overflow nor
+/// underflow (HQR's scaling by |p| + |q| + |r| costs a division on the step's dependency chain),
+/// scaled otherwise. Returns
 /// false when an eigenvalue needed more than 60 iterations (lambda then incomplete).
 template <class S, int N>
 bool smallHessenbergEigenvalues(Eigen::Matrix<S, N, N>& H, int n, std::vector<std::complex<S>>& lambda) {
@@ -73,6 +77,8 @@ bool smallHessenbergEigenvalues(Eigen::Matrix<S, N, N>& H, int n, std::vector<st
     for (int i = 0; i < n; ++i) lambda.emplace_back(S(0), S(0));
     return true;
   }
+  // Sums of squares in [tiny, big] are formed without scaling (no division on the bulge's path).
+  const S tiny = std::numeric_limits<S>::min() / eps, big = std::numeric_limits<S>::max();
   int hi = n - 1, its = 0;
   S shiftTotal = S(0);  // exceptional shifts applied to the diagonal
   while (hi >= 0) {
@@ -121,46 +127,49 @@ bool smallHessenbergEigenvalues(Eigen::Matrix<S, N, N>& H, int n, std::vector<st
     }
     ++its;
     // First column of (H − s1)(H − s2) restricted to rows m..m+2, started at the lowest m ≥ lo
-    // where the bulge does not disturb the small subdiagonal entry above it.
+    // where the bulge does not disturb the small subdiagonal entry above it. Formed times
+    // H(m+1, m) (HQR divides by it and normalises), which changes neither the test nor the
+    // reflector: no division per m.
     int m = hi - 2;
-    S p = S(0), q = S(0), r = S(0);
-    for (; m >= lo; --m) {
-      const S z = H(m, m);
+    S p, q, r;
+    for (;; --m) {
+      const S z = H(m, m), h10 = H(m + 1, m);
       const S rr = sx - z, ss = sy - z;
-      p = (rr * ss - sw) / H(m + 1, m) + H(m, m + 1);
-      q = H(m + 1, m + 1) - z - rr - ss;
-      r = H(m + 2, m + 1);
-      const S isc = S(1) / (abs(p) + abs(q) + abs(r));
-      p *= isc;
-      q *= isc;
-      r *= isc;
+      p = (rr * ss - sw) + H(m, m + 1) * h10;
+      q = (H(m + 1, m + 1) - z - rr - ss) * h10;
+      r = H(m + 2, m + 1) * h10;
       if (m == lo) break;
       const S u = abs(H(m, m - 1)) * (abs(q) + abs(r));
       const S vv = abs(p) * (abs(H(m - 1, m - 1)) + abs(z) + abs(H(m + 1, m + 1)));
-      if (u <= eps * vv) break;
+      if (vv >= tiny && vv <= big && u <= eps * vv) break;  // (u, vv ~ |H|³: kept in range)
     }
     for (int i = m + 2; i <= hi; ++i) {
       H(i, i - 2) = S(0);
       if (i != m + 2) H(i, i - 3) = S(0);
     }
     // Chase the bulge with 3-element reflectors (2-element at the bottom).
+    bool carried = false;  // p, q, r already hold H(k..k+2, k−1) (from the step before)
     for (int k = m; k < hi; ++k) {
       const bool last = k == hi - 1;
       S scale = S(1);
-      if (k != m) {
+      if (k != m && !carried) {
         p = H(k, k - 1);
         q = H(k + 1, k - 1);
         r = last ? S(0) : H(k + 2, k - 1);
+      }
+      carried = false;
+      S ss = p * p + q * q + r * r;
+      if (!(ss >= tiny && ss <= big)) {  // scaled against overflow and underflow
         scale = abs(p) + abs(q) + abs(r);
         if (scale == S(0)) continue;
-        const S is = S(1) / scale;  // reciprocals: 3 divisions a step instead of 8
+        const S is = S(1) / scale;
         p *= is;
         q *= is;
         r *= is;
+        ss = p * p + q * q + r * r;
       }
-      S sn = sqrt(p * p + q * q + r * r);
+      S sn = sqrt(ss);
       if (p < S(0)) sn = -sn;
-      if (sn == S(0)) continue;
       if (k == m) {
         if (lo != m) H(k, k - 1) = -H(k, k - 1);
       } else {
@@ -171,12 +180,43 @@ bool smallHessenbergEigenvalues(Eigen::Matrix<S, N, N>& H, int n, std::vector<st
       const S vx = p * isn, vy = q * isn, vz = r * isn;
       q *= ip;
       r *= ip;
-      // Rows k..k+2 from column k to hi, then columns k..k+2 from row lo to k+3 (eigenvalues
-      // only: nothing outside the active block). Separate 3- and 2-element loops on raw column
-      // pointers (stride N) so that the column update vectorises.
-      const int iMax = std::min(hi, k + 3);
       if (!last) {
-        int j = k;
+        S* __restrict c0 = &H(0, k);
+        S* __restrict c1 = &H(0, k + 1);
+        S* __restrict c2 = &H(0, k + 2);
+        // The 3×3 diagonal block and row k+3 updated in registers first: the next step's p, q, r
+        // come from them, so the bulge's dependency chain never waits on a store to memory.
+        S a00 = c0[k], a10 = c0[k + 1], a20 = c0[k + 2];
+        S a01 = c1[k], a11 = c1[k + 1], a21 = c1[k + 2];
+        S a02 = c2[k], a12 = c2[k + 1], a22 = c2[k + 2];
+        {
+          S d = a00 + q * a10 + r * a20;
+          a00 -= d * vx, a10 -= d * vy, a20 -= d * vz;
+          d = a01 + q * a11 + r * a21;
+          a01 -= d * vx, a11 -= d * vy, a21 -= d * vz;
+          d = a02 + q * a12 + r * a22;
+          a02 -= d * vx, a12 -= d * vy, a22 -= d * vz;
+          d = vx * a00 + vy * a01 + vz * a02;
+          a00 -= d, a01 -= d * q, a02 -= d * r;
+          d = vx * a10 + vy * a11 + vz * a12;
+          a10 -= d, a11 -= d * q, a12 -= d * r;
+          d = vx * a20 + vy * a21 + vz * a22;
+          a20 -= d, a21 -= d * q, a22 -= d * r;
+        }
+        S rn = S(0);
+        if (k + 3 <= hi) {  // H(k+3, k) = H(k+3, k+1) = 0 (zeroed above, untouched since)
+          const S h = c2[k + 3], d = vz * h;
+          c0[k + 3] = -d;
+          c1[k + 3] = -d * q;
+          c2[k + 3] = h - d * r;
+          rn = -d;
+        }
+        c0[k] = a00, c0[k + 1] = a10, c0[k + 2] = a20;
+        c1[k] = a01, c1[k + 1] = a11, c1[k + 2] = a21;
+        c2[k] = a02, c2[k + 1] = a12, c2[k + 2] = a22;
+        // Rows k..k+2 from column k+3 to hi, then columns k..k+2 from row lo to k−1 (eigenvalues
+        // only: nothing outside the active block).
+        int j = k + 3;
         if constexpr (std::is_same_v<S, double>) {  // two columns at a time in SSE2 registers
           typedef double V2 __attribute__((vector_size(16)));
           for (; j + 1 <= hi; j += 2) {
@@ -197,16 +237,16 @@ bool smallHessenbergEigenvalues(Eigen::Matrix<S, N, N>& H, int n, std::vector<st
           h[1] -= d * vy;
           h[2] -= d * vz;
         }
-        S* __restrict c0 = &H(0, k);
-        S* __restrict c1 = &H(0, k + 1);
-        S* __restrict c2 = &H(0, k + 2);
-        for (int i = lo; i <= iMax; ++i) {
+        for (int i = lo; i < k; ++i) {
           const S d = vx * c0[i] + vy * c1[i] + vz * c2[i];
           c0[i] -= d;
           c1[i] -= d * q;
           c2[i] -= d * r;
         }
+        p = a10, q = a20, r = rn;
+        carried = true;
       } else {
+        const int iMax = std::min(hi, k + 3);
         for (int j = k; j <= hi; ++j) {
           S* h = &H(k, j);
           const S d = h[0] + q * h[1];
@@ -225,6 +265,7 @@ bool smallHessenbergEigenvalues(Eigen::Matrix<S, N, N>& H, int n, std::vector<st
   }
   return true;
 }
+
 
 /// Eigenvalues of the leading n×n block of H (destroyed), n ≤ N: smallHessenbergGauss, then
 /// smallHessenbergEigenvalues. Returns false when the QR iteration did not converge (the caller

@@ -1,6 +1,7 @@
 #pragma once
 // Template bodies of the general-6R solver (general_6r.hpp). Included only by the
 // instantiating TUs (soma_instantiate, cmake/SomaInstantiate.cmake) and general_6r_{ceres,nlopt}.cpp.
+#include "soma/algebra/sin_cos.hpp"
 #include "soma/algebra/small_eigenvalues.hpp"
 #include "soma/algebra/small_linalg.hpp"
 #include "soma/geometry/serial/general_6r.hpp"
@@ -242,6 +243,20 @@ template <class S> struct Lu12 {
     solve(v);
     const S inv = std::max<S>(lower, S(2) * norm1(v) / S(36));
     return inv == S(0) ? S(0) : S(S(1) / inv / l1);
+  }
+  /// X ← M⁻¹ X for K right-hand sides at once, row by row (each row update runs along the K
+  /// columns: no dependency chain; the same operations in the same order as `solve` on each column).
+  template <int K> void solveColumns(Eigen::Matrix<S, 12, K>& X) const {
+    Eigen::Matrix<S, 12, K, Eigen::RowMajor> y;
+    for (int i = 0; i < 12; ++i) {
+      y.row(i) = X.row(perm[i]);
+      for (int k = 0; k < i; ++k) y.row(i) -= l[i][k] * y.row(k);
+    }
+    for (int i = 11; i >= 0; --i) {
+      for (int k = i + 1; k < 12; ++k) y.row(i) -= a[i][k] * y.row(k);
+      y.row(i) *= rdiag[i];
+    }
+    X = y;
   }
   /// b ← M⁻¹ b (forward substitution with the unit lower factor, then back substitution).
   void solve(Eigen::Matrix<S, 12, 1>& b) const {
@@ -610,17 +625,14 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
   if (rc > Tolerance<S>::rank()) {
     Work24<S> H = Work24<S>::Zero();
     H.template topRightCorner<12, 12>().setIdentity();
-    {  // −A⁻¹[C B], column by column with the LU of A factored for its rcond (rc > 0: no zero
-       // pivot; Eigen's blocked solve with 24 right-hand sides costs ~50k instructions here)
-      Eigen::Matrix<S, 12, 1> y;
-      for (int j = 0; j < 12; ++j) {
-        y = C.col(j);
-        luA.solve(y);
-        H.col(j).template segment<12>(12) = -y;
-        y = B.col(j);
-        luA.solve(y);
-        H.col(12 + j).template segment<12>(12) = -y;
-      }
+    {  // −A⁻¹[C B] with the LU of A factored for its rcond (rc > 0: no zero pivot), the 24
+       // right-hand sides together (Eigen's blocked solve cost ~50k instructions here; 24 solves
+       // of one column each are chains of dependent multiply-adds)
+      Eigen::Matrix<S, 12, 24> y;
+      y.template leftCols<12>() = C;
+      y.template rightCols<12>() = B;
+      luA.solveColumns(y);
+      H.template bottomRows<12>() = -y;
     }
     // The 8 extraneous eigenvalues x3 = ±i are deflated first (the QR iteration on 16×16 costs
     // about (16/24)³ ≈ 0.3 of the 24×24 one); when the deflation is not clean the full matrix is
@@ -744,9 +756,10 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
     phi[2] = beta + S(2) * atan(x);
     phi[3] = halfAngleFromPairs(n4, d4);
     phi[4] = halfAngleFromPairs(n5, d5);
-    const S c3 = cos(phi[2]), s3 = sin(phi[2]);
-    const S t4[3] = {S(1), cos(phi[3]), sin(phi[3])};
-    const S t5[3] = {S(1), cos(phi[4]), sin(phi[4])};
+    S c3, s3, t4[3] = {S(1), S(0), S(0)}, t5[3] = {S(1), S(0), S(0)};
+    sinCos(phi[2], s3, c3);
+    sinCos(phi[3], t4[2], t4[1]);
+    sinCos(phi[4], t5[2], t5[1]);
     Eigen::Matrix<S, 9, 1> m45;
     for (int i4 = 0; i4 < 3; ++i4)
       for (int i5 = 0; i5 < 3; ++i5) m45(i4 * 3 + i5) = t4[i4] * t5[i5];
@@ -771,7 +784,8 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
     // θ6 from the loop: Rz(θ6) = (Rz(θ1)K1···Rz(θ5)K5)ᵀ-rotation · K6ᵀ-rotation.
     Mat3<S> R = Mat3<S>::Identity();
     for (int i = 0; i < 5; ++i) {
-      const S c = cos(phi[i]), s = sin(phi[i]);
+      S c, s;
+      sinCos(phi[i], s, c);
       Mat3<S> Z;
       Z << c, -s, S(0), s, c, S(0), S(0), S(0), S(1);
       R = (R * Z * K.R[i]).eval();
@@ -799,15 +813,14 @@ template <class S>
 void chainForward(const std::array<Link<S>, 6>& L, const std::array<S, 6>& offset,
                   const std::array<S, 6>& q, Mat3<S>& R, Vec3<S>& t, std::array<Vec3<S>, 6>* z = nullptr,
                   std::array<Vec3<S>, 6>* o = nullptr) {
-  using std::cos;
-  using std::sin;
   R.setIdentity();
   t.setZero();
   for (int i = 0; i < 6; ++i) {
     if (z) (*z)[i] = R.col(2);
     if (o) (*o)[i] = t;
     const S th = offset[i] + q[i];
-    const S c = cos(th), s = sin(th);
+    S c, s;
+    sinCos(th, s, c);
     t += R * Vec3<S>(L[i].a * c, L[i].a * s, L[i].d);
     Mat3<S> Ai;
     Ai << c, -s * L[i].ca, s * L[i].sa, s, c * L[i].ca, -c * L[i].sa, S(0), L[i].sa, L[i].ca;
