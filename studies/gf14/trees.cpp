@@ -90,48 +90,6 @@ template <class S> void treeStructure(Context& ctx) {
   ctx.checkEqual("a parent list with a cycle (1→2→3→1) is InvalidInput", "rejected", cyc);
 }
 
-// Reference derivatives: in __float128 for the scalars narrower than it (8th-order central
-// differences at d = 1/256: truncation d⁸·|f⁽⁹⁾|/630 ≈ 1e-19·|f⁽⁹⁾|, below long double's rounding), in S
-// itself for __float128 and mpfr at d = ε^(1/9) (rounding ≈ 2ε|f|/d and truncation d⁸|f⁽⁹⁾|/630 both
-// ≈ ε^(8/9)); fdTol is that bound with the constant 4096 for |f|, |f⁽⁹⁾| of the O(1) random states.
-template <class S> constexpr bool kWideRef = std::is_same_v<S, float> || std::is_same_v<S, double> || std::is_same_v<S, long double>;
-template <class S> using Ref = std::conditional_t<kWideRef<S>, Q, S>;
-template <class S> Ref<S> diffStep() {
-  if constexpr (kWideRef<S>)
-    return Q(1) / 256;
-  else
-    return Tolerance<S>::precision(8);
-}
-template <class S> S fdTol() {
-  if constexpr (kWideRef<S>)
-    return S(0);
-  else {
-    using std::pow;
-    return S(4096) * pow(Tolerance<S>::epsilon(), S(8) / S(9));
-  }
-}
-template <class S> S tol(int ulps) { return Tolerance<S>::identity(ulps); }
-template <class S> DynVector<S> rvecS(std::mt19937_64& g, int n, double r = 1.5) { return castMatrix<S>(rvec(g, n, r)); }
-template <class S> S maxAbsS(const DynVector<S>& v) {
-  S m = S(0);
-  for (Eigen::Index i = 0; i < v.size(); ++i) {
-    using std::abs;
-    m = std::max<S>(m, abs(v(i)));
-  }
-  return m;
-}
-template <class S, class M> S maxAbsM(const M& m) {
-  S r = S(0);
-  for (Eigen::Index i = 0; i < m.rows(); ++i)
-    for (Eigen::Index j = 0; j < m.cols(); ++j) {
-      using std::abs;
-      r = std::max<S>(r, abs(S(m(i, j))));
-    }
-  return r;
-}
-template <class S> Vec6<S> v6(const Vec3<S>& a, const Vec3<S>& b) { return (Vec6<S>() << a, b).finished(); }
-template <class S> Mat6<S> bodyS(std::mt19937_64& g) { return randomBodyMatrix<S>(g); }
-
 template <class S> DynVector<S> lagrangeTau(const TreeDynamics<Ref<S>>& t, const DynVector<Ref<S>>& th, const DynVector<Ref<S>>& thd,
                                             const DynVector<Ref<S>>& thdd) {
   using R = Ref<S>;

@@ -97,8 +97,8 @@ template <class S> class ConstrainedTree {
                                         const DynVector<S>& thetaDDot, const DynVector<S>& tau) const;
   /// θ̈ from τ: θ̈ = θ̈_p + Z u, C θ̈_p = −γ (minimum norm), (ZᵀAZ) u = Zᵀ(τ − bias − Aθ̈_p).
   DynVector<S> forwardDynamics(const DynVector<S>& theta, const DynVector<S>& thetaDot, const DynVector<S>& tau) const;
-  /// Newton projection of θ onto the constraints (minimum-norm corrections, ≤ 20 sweeps to
-  /// Tolerance::identity) and of θ̇ onto the null space of C.
+  /// Newton projection of θ onto the constraints (minimum-norm corrections, ≤ digits<S>() + 20 sweeps
+  /// to Tolerance::identity) and of θ̇ onto the null space of C.
   ConstrainedState<S> project(const ConstrainedState<S>& y) const;
   /// One classical RK4 step (constant τ) of the null-space dynamics, then project() if asked.
   ConstrainedState<S> rk4Step(const ConstrainedState<S>& y, const S& h, const DynVector<S>& tau, bool projectAfter) const;
