@@ -101,6 +101,9 @@ template <class S> SerialDynamics<S> castRobot(const SerialDynamics<double>& r) 
 /// double's |ω| = 1 ± 1e-16, which mpfr rejects (Tolerance::input) and which turns θ + 200π into a
 /// rotation that differs by 200π·1e-16.
 template <class S> SerialDynamics<S> castRobotUnit(const SerialDynamics<double>& r) {
+  // std's sqrt by name: __float128 is a builtin type (no argument-dependent lookup), so an
+  // unqualified sqrt finds only the C library's ::sqrt(double) and normalises to double's 1e-16
+  using std::sqrt;
   std::vector<SE3Tangent<S>> s;
   std::vector<SpatialInertia<S>> l;
   for (int i = 0; i < r.dof(); ++i) {
