@@ -100,12 +100,15 @@ template <class S> SerialDynamics<S> castRobot(const SerialDynamics<double>& r) 
 /// revolute axis ω/|ω| with v less its ω component (pitch 0), a slide v/|v|. castRobot keeps the
 /// double's |ω| = 1 ± 1e-16, which mpfr rejects (Tolerance::input) and which turns θ + 200π into a
 /// rotation that differs by 200π·1e-16.
-template <class S> SerialDynamics<S> castRobotUnit(const SerialDynamics<double>& r) {
+template <class S, class T = double> SerialDynamics<S> castRobotUnit(const SerialDynamics<T>& r) {
+  // std's sqrt by name: __float128 is a builtin type (no argument-dependent lookup), so an
+  // unqualified sqrt finds only the C library's ::sqrt(double) and normalises to double's 1e-16
+  using std::sqrt;
   std::vector<SE3Tangent<S>> s;
   std::vector<SpatialInertia<S>> l;
   for (int i = 0; i < r.dof(); ++i) {
-    const SE3Tangent<double>& x = r.homeScrews()[std::size_t(i)];
-    Vec3<S> w = castMatrix<S>(x.ang()), v = castMatrix<S>(x.lin());
+    const SE3Tangent<T>& x = r.homeScrews()[std::size_t(i)];
+    Vec3<S> w = castMatrix<S>(Vec3<T>(x.ang())), v = castMatrix<S>(Vec3<T>(x.lin()));
     if (w.squaredNorm() > S(0)) {
       w /= sqrt(w.squaredNorm());
       v -= w.dot(v) * w;
@@ -113,8 +116,8 @@ template <class S> SerialDynamics<S> castRobotUnit(const SerialDynamics<double>&
       v /= sqrt(v.squaredNorm());
     }
     s.emplace_back(w, v);
-    const SpatialInertia<double>& b = r.homeLinks()[std::size_t(i)];
-    const Mat3<S> I = castMatrix<S>(b.inertiaAboutCentre());
+    const SpatialInertia<T>& b = r.homeLinks()[std::size_t(i)];
+    const Mat3<S> I = castMatrix<S>(Mat3<T>(b.inertiaAboutCentre()));
     l.emplace_back(scalarCast<S>(b.mass()), castMatrix<S>(b.centreOfMass()), Mat3<S>((I + I.transpose()) / S(2)));
   }
   return SerialDynamics<S>(s, l, scalarCast<S>(r.gravity()));
@@ -182,6 +185,42 @@ template <class S> DynVector<S> rjointsS(std::mt19937_64& g, int n, double lo = 
   return o;
 }
 template <class S> S tol(int ulps = 64) { return Tolerance<S>::identity(ulps); }
+
+// Reference derivatives of a study in S: in __float128 for the scalars narrower than it (8th-order
+// central differences at d = 2⁻⁸: truncation d⁸|f⁽⁹⁾|/630 ≈ 1e-22|f⁽⁹⁾|, rounding 2.3 ε_q|f|/d ≈
+// 1e-31|f|, both below long double's ε), in S itself for __float128 and mpfr at d = ε^(1/9) (rounding
+// 2.3 ε|f|/d and truncation d⁸|f⁽⁹⁾|/630 both ≈ ε^(8/9)); refTol<S>() is that bound with the constant
+// 4096 for |f| and |f⁽⁹⁾| of the O(1) random states (0 below __float128). As gf14/trees.cpp.
+template <class S>
+inline constexpr bool kWideRef = std::is_same_v<S, float> || std::is_same_v<S, double> || std::is_same_v<S, long double>;
+template <class S> using Ref = std::conditional_t<kWideRef<S>, Q, S>;
+template <class S> Ref<S> refStep() {
+  if constexpr (kWideRef<S>)
+    return Q(1) / Q(256);
+  else
+    return Tolerance<S>::precision(8);
+}
+template <class S> S refTol() {
+  if constexpr (kWideRef<S>) {
+    return S(0);
+  } else {
+    using std::pow;
+    return S(4096) * pow(Tolerance<S>::epsilon(), S(8) / S(9));
+  }
+}
+template <class S> const char* refHow() { return kWideRef<S> ? "differences in __float128" : "differences in S at d = ε^(1/9)"; }
+/// f'(0) for f: Ref<S> → Ref<S>, as S (diff8 in Ref<S> at refStep).
+template <class S, class F> S refDiff(F&& f) { return scalarCast<S>(diff8<Ref<S>>(f, refStep<S>())); }
+/// The same for a vector- or matrix-valued f, as the matrix in S.
+template <class S, class F> auto refDiffM(F&& f) {
+  using R = Ref<S>;
+  const R d = refStep<S>();
+  using M = std::decay_t<decltype(f(d))>;  // evaluated: no Eigen expression outlives its temporaries
+  const R c[4] = {R(4) / R(5), R(-1) / R(5), R(4) / R(105), R(-1) / R(280)};
+  M r = M(f(d) - f(R(-1) * d)) * c[0];
+  for (int k = 2; k <= 4; ++k) r += M(M(f(R(k) * d)) - M(f(R(-k) * d))) * c[k - 1];
+  return castMatrix<S>(M(r / d));
+}
 
 /// The PUMA 560 (standard DH) with the Armstrong–Khatib–Burdick inertias of puma560_dynamics.json.
 inline std::filesystem::path robotsDir() {
