@@ -28,10 +28,9 @@ set(SOMA_UNITY_BATCH 8 CACHE STRING "Files per unity batch of the tests and stud
 # ::sqrt(double) when S is long double or __float128 (builtin types: no argument-dependent lookup),
 # and rounds the answer to double in silence; `using std::sqrt;` in the function fixes it. clang's
 # -Wimplicit-float-conversion sees the narrowing in the instantiation. The library's instantiation
-# TUs of __float128 and mpfr and the ladder TUs (long double, __float128, mpfr and float together)
-# had none left after the audit of 2026-12-05 (papers/robustness.md), so there it is an error:
-# soma_instantiate adds this to those units. Not yet to the *_long_double TUs (not audited: their
-# float128 twins are clean) nor to float's and double's (double -> float conversions not audited).
+# TUs of long double, __float128 and mpfr and the ladder TUs (those three and float together) had
+# none left after the audit of 2026-12-05 (papers/robustness.md), so there it is an error:
+# soma_instantiate adds this to every unit but float's and double's (double -> float not audited).
 # (Clang only: GCC has no -Wimplicit-float-conversion, and its -Wfloat-conversion was not audited.)
 if(CMAKE_CXX_COMPILER_ID MATCHES "Clang")
   set(soma_wide_default "-Werror=implicit-float-conversion")
