@@ -144,5 +144,9 @@ ${body}}  // namespace soma
       set_source_files_properties(${tu} TARGET_DIRECTORY ${ARG_TARGET} PROPERTIES
                                   COMPILE_OPTIONS "$<$<CONFIG:Release>:${SOMA_SCALAR_OPT_${unit}}>")
     endif()
+    if(NOT unit MATCHES "^(float|double)$")  # a wide scalar narrowed to double fails (SomaWarnings.cmake)
+      set_property(SOURCE ${tu} TARGET_DIRECTORY ${ARG_TARGET} APPEND PROPERTY
+                   COMPILE_OPTIONS ${SOMA_WIDE_SCALAR_ERRORS})
+    endif()
   endforeach()
 endfunction()

@@ -30,6 +30,7 @@ template <class S> StudyPlane<S> StudyPlane<S>::fromOrthogonal(const Mat4<S>& M)
 
 // GF §11.2.2, GF-11.2.2-A-plane-cosets: x = (a + c)/2 = M y, y = (a − c)/2 on every point.
 template <class S> StudyPlane<S> StudyPlane<S>::fromSpan(const Mat84& P) {
+  using std::sqrt;  // by name: __float128 and long double have no ADL, and ::sqrt is double's
   if (!allFinite(P)) throw InvalidInput("StudyPlane::fromSpan: a point has a NaN or infinite coordinate");
   Mat84 Q = P;
   for (int k = 0; k < 4; ++k) {
@@ -101,6 +102,7 @@ template <class S> Vec8<S> StudyPlane<S>::point(const Vec4<S>& y) const {
 }
 
 template <class S> S StudyPlane<S>::residual(const Vec8<S>& x) const {
+  using std::sqrt;  // by name: __float128 and long double have no ADL, and ::sqrt is double's
   const S n = sqrt(x.squaredNorm());
   return n > S(0) ? S(sqrt((equations() * x).squaredNorm()) / n) : S(0);
 }

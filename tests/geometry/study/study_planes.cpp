@@ -87,6 +87,32 @@ TEMPLATE_TEST_CASE("StudyPlane: SO(3)_p is the Cayley plane diag(1, Cay(p)) — 
   CHECK(StudyParameters<S>(ideal).inExceptionalPlane());
 }
 
+// Issue 22: residual() took ::sqrt(double) for long double and __float128 (no ADL for builtin types),
+// so its value was good to double's 1e-16 only. Against |E x|/|x| in mpfr-256 from the same E and x,
+// rounding bounds it by ε(8‖|E||x|‖/‖E x‖ + 16): the 8-term products (γ₈ relative to |E||x|), the two
+// squared norms (γ₈, γ₄), two square roots and the quotient.
+TEMPLATE_TEST_CASE("StudyPlane: residual(x) = |E x|/|x| to the rounding of S (mpfr-256 reference)", "[study][plane]",
+                   SOMA_TEST_SCALARS_FAST) {
+  using S = TestType;
+  using M = mpfr::mpreal;
+  const auto toM = [](const S& v) { return scalarCast<M>(v); };
+  auto& g = rng(16);
+  const M eps = scalarCast<M>(std::numeric_limits<S>::epsilon());
+  M worst = 0;
+  for (int k = 0; k < 50; ++k) {
+    const auto P = StudyPlane<S>::rotationsAbout(uniformVec<S, 3>(g, -2, 2));
+    const Vec8<S> x = uniformVec<S, 8>(g);
+    const Eigen::Matrix<M, 4, 8> E = P.equations().unaryExpr(toM);
+    const Eigen::Matrix<M, 8, 1> xm = x.unaryExpr(toM);
+    const M exact = sqrt((E * xm).squaredNorm()) / sqrt(xm.squaredNorm());
+    const M size = sqrt((E.cwiseAbs() * xm.cwiseAbs()).squaredNorm()) / sqrt((E * xm).squaredNorm());
+    const M err = abs(scalarCast<M>(P.residual(x)) - exact) / exact / (eps * (8 * size + 16));
+    worst = std::max(worst, err);
+  }
+  INFO("worst error / bound " << worst.toString(3));
+  CHECK(worst <= 1);
+}
+
 TEMPLATE_TEST_CASE("StudyPlane: cosets g·SO(3)_p stay A-planes and contain g times the rotations", "[study][plane]",
                    SOMA_TEST_SCALARS_FAST) {
   using S = TestType;
