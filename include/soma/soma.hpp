@@ -42,6 +42,7 @@
 #include <soma/algebra/study_parameters.hpp>
 #include <soma/algebra/taylor.hpp>
 #include <soma/algebra/tolerance.hpp>
+#include <soma/algebra/wrap_angle.hpp>
 
 // geometry
 #include <soma/geometry/cuspidal/cuspidality.hpp>

@@ -7,6 +7,7 @@
 // A sweep in the scalar asked for (--scalar), not a ladder study: it times no rung against another;
 // solveIk<S> escalates to the next wider scalar by itself (the 'escalated' column).
 #include "soma/geometry/serial/ik.hpp"
+#include "soma/algebra/wrap_angle.hpp"
 #include "soma/studies/scalar_draws.hpp"
 #include "soma/studies/study.hpp"
 
@@ -58,13 +59,6 @@ template <class S> SerialRobot<S> perturbed(const Arm& arm, const S& eps, std::m
   return SerialRobot<S>::fromDH(dh, DHConvention::Standard, SE3<S>(), SE3<S>(), arm.name);
 }
 
-template <class S> S wrapped(const S& a) {
-  using std::atan2;
-  using std::cos;
-  using std::sin;
-  return atan2(sin(a), cos(a));
-}
-
 template <class S> struct Cell {
   int poses = 0, found = 0, certified = 0, odd = 0, overCount = 0, escalated = 0, maxCount = 0, completed = 0;
   std::map<int, int> counts;
@@ -104,7 +98,7 @@ template <class S> void sweep(Context& ctx) {
         for (std::size_t j = 0; j < sol.count(); ++j) {
           S d = 0;
           using std::abs;
-          for (int i = 0; i < 6; ++i) d = maxOf(d, S(abs(wrapped(S(sol.postures[j](i) - q(i))))));
+          for (int i = 0; i < 6; ++i) d = maxOf(d, S(abs(wrapAngle(S(sol.postures[j](i) - q(i))))));
           hit = hit || d < same;
           c.worst = maxOf(c.worst, sol.residuals[j]);
         }

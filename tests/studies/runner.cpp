@@ -86,6 +86,8 @@ TEST_CASE("a study fails when a check fails, throws, or checks nothing", "[runne
   const Study nan = makeStudy("nan", [](Context& c) {
     c.checkResidual("residual", std::numeric_limits<double>::quiet_NaN(), 1.0);
   });
+  // A residual is a norm: a negative one is a signed value passed by mistake, and fails.
+  const Study negative = makeStudy("negative", [](Context& c) { c.checkResidual("residual", -1e-300, 1.0); });
   const Study throws = makeStudy("throws", [](Context&) { throw std::runtime_error("boom"); });
   const Study empty = makeStudy("empty", [](Context&) {});
   const auto dir = std::filesystem::temp_directory_path() / "soma-test-runner";
@@ -98,6 +100,7 @@ TEST_CASE("a study fails when a check fails, throws, or checks nothing", "[runne
   CHECK_FALSE(rBad.checks[0].passed);
   CHECK(rBad.checks[1].passed);
   CHECK_FALSE(runStudy(nan, ScalarKind::Double, dir, false).passed());  // NaN never passes
+  CHECK_FALSE(runStudy(negative, ScalarKind::Double, dir, false).passed());
   const auto rThrows = runStudy(throws, ScalarKind::Double, dir, false);
   CHECK_FALSE(rThrows.passed());
   CHECK(rThrows.error == "boom");

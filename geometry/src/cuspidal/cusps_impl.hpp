@@ -5,6 +5,7 @@
 
 #include "soma/algebra/errors.hpp"
 #include "soma/algebra/polynomial.hpp"
+#include "soma/algebra/wrap_angle.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -92,13 +93,6 @@ template <class S> struct Scaled {
     return abE * abE * (c1 * c1 * t.U - t.T * t.T);
   }
 };
-
-template <class S> S wrapAngle(S x) {
-  using std::atan2;
-  using std::cos;
-  using std::sin;
-  return atan2(sin(x), cos(x));
-}
 
 }  // namespace
 

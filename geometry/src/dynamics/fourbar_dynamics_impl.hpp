@@ -3,15 +3,10 @@
 #include "soma/geometry/dynamics/fourbar_dynamics.hpp"
 
 #include "soma/algebra/small_linalg.hpp"
+#include "soma/algebra/wrap_angle.hpp"
 
 namespace soma {
 namespace {
-template <class S> S wrapAngle(S a) {
-  using std::atan2;
-  using std::cos;
-  using std::sin;
-  return atan2(sin(a), cos(a));
-}
 template <class S> PVec<S> solve3(const PMat<S>& A, const PVec<S>& b) {
   Eigen::Matrix<S, 3, 3> a = A;
   Eigen::Matrix<S, 3, 1> x = b;

@@ -292,6 +292,38 @@ TEMPLATE_TEST_CASE("IK auto: near, not exactly, Pieper is solved as the general 
   }
 }
 
+// SOMA-6R-calibration-sweep --scalar long-double, PUMA 560 with every DH parameter perturbed by 1e-9
+// of its length scale (the sweep's robot, printed to 21 digits), pose 42 (0.16° from the wrist
+// singularity): the general 6R's two 4-fold clusters of roots (the shoulder and wrist postures
+// share θ1 to 2e-7) came out of the long-double eigensolver as complex pairs with |Im| up to
+// 9.2e-5 relative, above realTol = eps^(1/3); the answer was 0 postures, certified, no warning.
+// Complex eigenvalues within 16 eps^(1/4) of the real axis now make the answer suspect, and the
+// re-solve in float128 separates the clusters. Checked against the 8 postures double finds.
+TEMPLATE_TEST_CASE("IK extremes: nearly Pieper PUMA at a near-wrist-singular pose, clustered roots", "[serial][ik][extreme][cluster]",
+                   double, long double) {
+  using S = TestType;
+  const long double rows[6][4] = {
+      {-8.62840033570531695051e-11L, 1.57079632710297178695L, -3.51882391863937123081e-10L, -8.76646504892350408859e-10L},
+      {0.43180000034773734647L, -4.74651395852815571866e-10L, -3.52241740213851301992e-10L, -1.89462202056430273347e-10L},
+      {0.0202999999918335894222L, -1.57079632588505913873L, 0.150049999844935488518L, 3.22466472498905032383e-10L},
+      {2.31800376419869373159e-10L, 1.57079632602315113826L, 0.431799999731638078622L, -6.83199613779477910033e-10L},
+      {1.38716281001976912718e-10L, -1.57079632681103037992L, -8.1771521604496003871e-11L, -1.30710352490373993277e-10L},
+      {3.5826691729581751407e-10L, 8.5277580389364060485e-10L, 0.0562500004003721579755L, 5.18078555286603847911e-10L}};
+  std::vector<DHRow<S>> dh(6);
+  for (int i = 0; i < 6; ++i) dh[i] = {JointType::Revolute, S(rows[i][0]), S(rows[i][1]), S(rows[i][2]), S(rows[i][3])};
+  const auto robot = SerialRobot<S>::fromDH(dh, DHConvention::Standard);
+  JointVector<S> q(6);
+  q << S(2.58295939323219547745L), S(0.00213788071343001817581L), S(1.61468334971845939307L),
+      S(-0.337346486158248914933L), S(-0.00282155966906394439775L), S(2.38701953951597056758L);
+  const SE3<S> T = robot.fk(q);
+  const IkSolution<S> sol = solveIk(robot, T, IkOptions{});
+  CHECK(sol.method == "general6r");
+  CHECK(sol.count() == 8);
+  // q is known to the pose's accuracy over the smallest singular value of J(q) (as in roundTrip)
+  CHECK(nearest(sol, q) <= S(64) * tol4096<S>() / singularityMeasures(robot, q).smallestSingularValue);
+  for (std::size_t k = 0; k < sol.count(); ++k) CHECK(poseResidual(robot.fk(sol.postures[k]), T, robot.lengthScale()) <= tol4096<S>());
+}
+
 TEST_CASE("IK extremes: random joints on a robot with 16 real postures", "[serial][ik][extreme][sixteen]") {
   using S = double;
   auto& g = test::rng(814);

@@ -54,11 +54,12 @@ class Context {
     return record(name, io::numberText(expected), io::numberText(got), toDouble(err), toDouble(tolerance),
                   isFinite(err) && err <= tolerance, io::numberText(err), io::numberText(tolerance));
   }
-  /// A residual check of an identity: passes when 0 ≤ residual ≤ tolerance.
+  /// A residual check of an identity: passes when 0 ≤ residual ≤ tolerance. A residual is a norm or
+  /// an absolute difference: a negative one (a signed quantity passed by mistake) fails.
   template <class S>
   bool checkResidual(const std::string& name, const S& residual, const S& tolerance) {
     return record(name, "0", io::numberText(residual), toDouble(residual), toDouble(tolerance),
-                  isFinite(residual) && residual <= tolerance, io::numberText(residual),
+                  isFinite(residual) && residual >= S(0) && residual <= tolerance, io::numberText(residual),
                   io::numberText(tolerance));
   }
   /// An exact check (a count, a classification): passes when expected == got.
