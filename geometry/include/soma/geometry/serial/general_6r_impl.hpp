@@ -1,6 +1,7 @@
 #pragma once
 // Template bodies of the general-6R solver (general_6r.hpp). Included only by the
 // instantiating TUs (soma_instantiate, cmake/SomaInstantiate.cmake) and general_6r_{ceres,nlopt}.cpp.
+#include "soma/algebra/cpu_dispatch.hpp"
 #include "soma/algebra/sin_cos.hpp"
 #include "soma/algebra/small_eigenvalues.hpp"
 #include "soma/algebra/small_linalg.hpp"
@@ -147,7 +148,18 @@ template <class S> struct Lu12 {
   bool ok = true;
   Lu12() = default;
   explicit Lu12(const M12<S>& m) { factor(m); }
+  /// Factors m; in double on a CPU with AVX2 and FMA by the AVX2 + FMA build of factorBody.
   void factor(const M12<S>& m) {
+#ifdef SOMA_X86_AVX2_DISPATCH
+    if constexpr (std::is_same_v<S, double>)
+      if (detail::cpuHasAvx2Fma()) return factorAvx2(m);
+#endif
+    factorBody(m);
+  }
+#ifdef SOMA_X86_AVX2_DISPATCH
+  SOMA_TARGET_AVX2_FMA void factorAvx2(const M12<S>& m) { factorBody(m); }
+#endif
+  [[gnu::always_inline]] inline void factorBody(const M12<S>& m) {
     using std::abs;
     // In hardware floating point every row update runs over all 12 columns (the entries left of
     // the pivot are zeros on both rows): a fixed trip count that vectorises, ~2× fewer
@@ -247,6 +259,18 @@ template <class S> struct Lu12 {
   /// X ← M⁻¹ X for K right-hand sides at once, row by row (each row update runs along the K
   /// columns: no dependency chain; the same operations in the same order as `solve` on each column).
   template <int K> void solveColumns(Eigen::Matrix<S, 12, K>& X) const {
+#ifdef SOMA_X86_AVX2_DISPATCH
+    if constexpr (std::is_same_v<S, double>)
+      if (detail::cpuHasAvx2Fma()) return solveColumnsAvx2<K>(X);
+#endif
+    solveColumnsBody<K>(X);
+  }
+#ifdef SOMA_X86_AVX2_DISPATCH
+  template <int K> SOMA_TARGET_AVX2_FMA void solveColumnsAvx2(Eigen::Matrix<S, 12, K>& X) const {
+    solveColumnsBody<K>(X);
+  }
+#endif
+  template <int K> [[gnu::always_inline]] inline void solveColumnsBody(Eigen::Matrix<S, 12, K>& X) const {
     Eigen::Matrix<S, 12, K, Eigen::RowMajor> y;
     for (int i = 0; i < 12; ++i) {
       y.row(i) = X.row(perm[i]);
@@ -293,7 +317,8 @@ template <class S> using Work24 = Eigen::Matrix<S, 24, 24>;
 /// when it is at round-off (Tolerance::identity(4096)); otherwise false and H still holds K.
 // Manocha & Canny (1994) eigenproblem; GF §11.5 (16 postures)
 template <class S>
-bool deflateExtraneous(Work24<S>& H, const M12<S>& A, const M12<S>& B, const M12<S>& C, S& defect) {
+[[gnu::always_inline]] inline bool deflateExtraneousBody(Work24<S>& H, const M12<S>& A, const M12<S>& B,
+                                                         const M12<S>& C, S& defect) {
   using std::abs;
   M12<S> zr = C - A, zi = B;  // M(i) = zr + i zi, eliminated in place
   std::array<int, 12> col;    // col[c]: the original column now at position c
@@ -441,6 +466,23 @@ bool deflateExtraneous(Work24<S>& H, const M12<S>& A, const M12<S>& B, const M12
   if (!(defect <= Tolerance<S>::identity(4096))) return false;
   H.topLeftCorner(16, 16) = Nm.topLeftCorner(16, 16);
   return true;
+}
+#ifdef SOMA_X86_AVX2_DISPATCH
+template <class S>
+SOMA_TARGET_AVX2_FMA bool deflateExtraneousAvx2(Work24<S>& H, const M12<S>& A, const M12<S>& B, const M12<S>& C,
+                                                S& defect) {
+  return deflateExtraneousBody<S>(H, A, B, C, defect);
+}
+#endif
+/// deflateExtraneousBody; in double on a CPU with AVX2 and FMA by its AVX2 + FMA build
+/// (soma/algebra/cpu_dispatch.hpp).
+template <class S>
+bool deflateExtraneous(Work24<S>& H, const M12<S>& A, const M12<S>& B, const M12<S>& C, S& defect) {
+#ifdef SOMA_X86_AVX2_DISPATCH
+  if constexpr (std::is_same_v<S, double>)
+    if (detail::cpuHasAvx2Fma()) return deflateExtraneousAvx2<S>(H, A, B, C, defect);
+#endif
+  return deflateExtraneousBody<S>(H, A, B, C, defect);
 }
 
 /// The closed loop Rz(φ1)·K1·Rz(φ2)·K2···Rz(φ6)·K6 = I of a 6R chain reaching T: K_i = G_i =
