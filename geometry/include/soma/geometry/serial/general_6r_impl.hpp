@@ -836,10 +836,14 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
     phi[0] = atan2(u(5), u(2));
     phi[1] = atan2(u(1), u(0));
     // θ6 from the loop: Rz(θ6) = (Rz(θ1)K1···Rz(θ5)K5)ᵀ-rotation · K6ᵀ-rotation.
+    // (cos, sin) of θ3, θ4, θ5 as computed above: the same values, three sincos calls fewer.
     Mat3<S> R = Mat3<S>::Identity();
     for (int i = 0; i < 5; ++i) {
       S c, s;
-      sinCos(phi[i], s, c);
+      if (i == 2) c = c3, s = s3;
+      else if (i == 3) c = t4[1], s = t4[2];
+      else if (i == 4) c = t5[1], s = t5[2];
+      else sinCos(phi[i], s, c);
       Mat3<S> Z;
       Z << c, -s, S(0), s, c, S(0), S(0), S(0), S(1);
       R = (R * Z * K.R[i]).eval();
