@@ -298,6 +298,93 @@ template <class S> struct Lu12 {
   }
 };
 
+/// Householder QR with column pivoting of a 14×8 matrix, Q·R = M·P: Eigen's ColPivHouseholderQR
+/// (3.4, computeInPlace) step for step — the largest remaining column norm as pivot, the reflector
+/// of makeHouseholderInPlace, the norm downdate of LAPACK working note 176 with its recomputation,
+/// nonzero pivots counted against the same threshold — on fixed arrays (Eigen's runs on dynamic
+/// blocks at this size: ~11k instructions a pose, this ~3k). Layout as Eigen's matrixQR(): R on
+/// and above the diagonal, reflector k's essential part below it (its first entry 1 implied).
+template <class S> struct Qr14x8 {
+  M14x8<S> qr;
+  S tau[8];        ///< reflector k is I − τ_k v vᵀ
+  int perm[8];     ///< column i of M·P is column perm[i] of M
+  int nonzero = 8; ///< Eigen's nonzeroPivots()
+  explicit Qr14x8(const M14x8<S>& m) : qr(m) {
+    using std::abs;
+    using std::sqrt;
+    constexpr int rows = 14, cols = 8;
+    const S eps = Tolerance<S>::epsilon();
+    S normU[cols], normD[cols];
+    S maxNorm = S(0);
+    for (int j = 0; j < cols; ++j) {
+      S t = S(0);
+      for (int i = 0; i < rows; ++i) t += qr(i, j) * qr(i, j);
+      normD[j] = normU[j] = sqrt(t);
+      if (j == 0 || normU[j] > maxNorm) maxNorm = normU[j];
+      perm[j] = j;
+    }
+    const S thresholdHelper = (maxNorm * eps) * (maxNorm * eps) / S(rows);
+    const S downdate = sqrt(eps);
+    for (int k = 0; k < cols; ++k) {
+      int big = k;
+      for (int j = k + 1; j < cols; ++j)
+        if (normU[j] > normU[big]) big = j;
+      if (nonzero == cols && normU[big] * normU[big] < thresholdHelper * S(rows - k)) nonzero = k;
+      if (big != k) {
+        for (int i = 0; i < rows; ++i) std::swap(qr(i, k), qr(i, big));
+        std::swap(normU[k], normU[big]);
+        std::swap(normD[k], normD[big]);
+        std::swap(perm[k], perm[big]);
+      }
+      // makeHouseholderInPlace on rows k..13 of column k
+      S tail = S(0);
+      for (int i = k + 1; i < rows; ++i) tail += qr(i, k) * qr(i, k);
+      const S c0 = qr(k, k);
+      S beta;
+      if (tail <= std::numeric_limits<S>::min()) {
+        tau[k] = S(0);
+        beta = c0;
+        for (int i = k + 1; i < rows; ++i) qr(i, k) = S(0);
+      } else {
+        beta = sqrt(c0 * c0 + tail);
+        if (c0 >= S(0)) beta = -beta;
+        const S inv = S(1) / (c0 - beta);
+        for (int i = k + 1; i < rows; ++i) qr(i, k) *= inv;
+        tau[k] = (beta - c0) / beta;
+      }
+      qr(k, k) = beta;
+      // applyHouseholderOnTheLeft on rows k..13 of columns k+1..7, with v padded by zeros above
+      // row k: every loop runs over the 14 rows (a fixed trip count; the zeros add nothing).
+      if (tau[k] != S(0)) {
+        S v[rows];
+        for (int i = 0; i < rows; ++i) v[i] = i > k ? S(qr(i, k)) : S(i == k ? 1 : 0);
+        for (int j = k + 1; j < cols; ++j) {
+          S* c = &qr(0, j);
+          S d = S(0);
+          for (int i = 0; i < rows; ++i) d += v[i] * c[i];
+          d *= tau[k];
+          for (int i = 0; i < rows; ++i) c[i] -= d * v[i];
+        }
+      }
+      for (int j = k + 1; j < cols; ++j) {  // norm downdate (LAWN 176, as xGEQPF)
+        if (normU[j] == S(0)) continue;
+        S t = abs(qr(k, j)) / normU[j];
+        t = (S(1) + t) * (S(1) - t);
+        if (t < S(0)) t = S(0);
+        const S ratio = normU[j] / normD[j];
+        if (t * (ratio * ratio) <= downdate) {
+          S sq = S(0);
+          for (int i = k + 1; i < rows; ++i) sq += qr(i, j) * qr(i, j);
+          normD[j] = normU[j] = sqrt(sq);
+        } else {
+          normU[j] *= sqrt(t);
+        }
+      }
+    }
+  }
+  const M14x8<S>& matrixQR() const { return qr; }
+};
+
 /// Working storage of the small eigenproblems: a fixed 24×24 array, the active size n ≤ 24.
 template <class S> using Work24 = Eigen::Matrix<S, 24, 24>;
 
@@ -582,7 +669,7 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
   for (int c = 0; c < 8; ++c) Q.col(c) = H[c + 1];
 
   // Left null space of Q (6×14): the last 6 columns of the Householder Q of Q.
-  Eigen::ColPivHouseholderQR<M14x8<S>> qr(Q);
+  const Qr14x8<S> qr(Q);
   const S r00 = abs(qr.matrixQR()(0, 0)), r77 = abs(qr.matrixQR()(7, 7));
   out.qRank = r00 > S(0) ? toDouble(r77 / r00) : 0.0;
   if (!(r77 > Tolerance<S>::rank() * r00)) {
@@ -603,7 +690,7 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
   auto reflect = [&](int k, S* x) {  // x ← (I − τ_k v vᵀ) x, x of length 14
     S d = x[k];
     for (int i = k + 1; i < 14; ++i) d += qrm(i, k) * x[i];
-    d *= qr.hCoeffs()(k);
+    d *= qr.tau[k];
     x[k] -= d;
     for (int i = k + 1; i < 14; ++i) x[i] -= d * qrm(i, k);
   };
@@ -823,14 +910,14 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
     Eigen::Matrix<S, 8, 1> u = Eigen::Matrix<S, 8, 1>::Zero();
     {
       V14<S> c = rhs;
-      const int nz = int(qr.nonzeroPivots());
+      const int nz = qr.nonzero;
       for (int k = 0; k < nz; ++k) reflect(k, c.data());
       for (int i = nz - 1; i >= 0; --i) {
         S v = c(i);
         for (int k = i + 1; k < nz; ++k) v -= qrm(i, k) * c(k);
         c(i) = v / qrm(i, i);
       }
-      for (int i = 0; i < nz; ++i) u(qr.colsPermutation().indices()(i)) = c(i);
+      for (int i = 0; i < nz; ++i) u(qr.perm[i]) = c(i);
     }
     // u = (c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2)
     phi[0] = atan2(u(5), u(2));
