@@ -166,22 +166,33 @@ TEST_CASE("small eigenvalues: random matrices agree with Eigen's EigenSolver wit
       const CMatX w = v.inverse();  // rows: left eigenvectors with w_i v_i = 1
       std::vector<std::complex<double>> want;
       for (int i = 0; i < n; ++i) want.push_back(es.eigenvalues()(i));
-      Mat24 h = Mat24::Zero();
-      h.topLeftCorner(n, n) = a;
-      std::vector<std::complex<double>> got;
-      REQUIRE(detail::smallEigenvalues<double, 24>(h, n, got));
-      REQUIRE(int(got.size()) == n);
-      for (const auto& [z, j] : match(got, want)) {
-        REQUIRE(j >= 0);
-        // Condition number of the eigenvalue: ‖x‖·‖y‖ / |yᴴx| = ‖v_j‖·‖w_j‖ (w_j v_j = 1); both
-        // methods err by at most κ × their backward error (first order).
-        const double kappa = v.col(j).norm() * w.row(j).norm();
-        INFO("n " << n << " trial " << trial << " eigenvalue " << z << " Eigen " << want[j] << " κ " << kappa);
-        CHECK(std::abs(z - want[j]) <= 2 * kappa * backwardError(a));
-        ++compared;
+      // Both builds of the double kernels: the one chosen at run time (AVX2 + FMA when the CPU
+      // has them, soma/algebra/cpu_dispatch.hpp) and the portable bodies called directly.
+      for (const bool portable : {false, true}) {
+        Mat24 h = Mat24::Zero();
+        h.topLeftCorner(n, n) = a;
+        std::vector<std::complex<double>> got;
+        if (portable) {
+          detail::smallHessenbergGaussBody<double, 24>(h, n);
+          REQUIRE(detail::smallHessenbergEigenvaluesBody<double, 24>(h, n, got));
+        } else {
+          REQUIRE(detail::smallEigenvalues<double, 24>(h, n, got));
+        }
+        REQUIRE(int(got.size()) == n);
+        for (const auto& [z, j] : match(got, want)) {
+          REQUIRE(j >= 0);
+          // Condition number of the eigenvalue: ‖x‖·‖y‖ / |yᴴx| = ‖v_j‖·‖w_j‖ (w_j v_j = 1); both
+          // methods err by at most κ × their backward error (first order).
+          const double kappa = v.col(j).norm() * w.row(j).norm();
+          INFO("n " << n << " trial " << trial << (portable ? " portable" : " dispatched (AVX2 + FMA: ")
+                    << (portable ? "" : detail::cpuHasAvx2Fma() ? "yes)" : "no)") << " eigenvalue " << z
+                    << " Eigen " << want[j] << " κ " << kappa);
+          CHECK(std::abs(z - want[j]) <= 2 * kappa * backwardError(a));
+          ++compared;
+        }
       }
     }
-  CHECK(compared == 20 * 24 * 25 / 2);
+  CHECK(compared == 2 * 20 * 24 * 25 / 2);
 }
 
 TEST_CASE("small eigenvalues: no convergence is reported, not hidden", "[small_eigenvalues]") {

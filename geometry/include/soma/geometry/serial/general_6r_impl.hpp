@@ -1,6 +1,7 @@
 #pragma once
 // Template bodies of the general-6R solver (general_6r.hpp). Included only by the
 // instantiating TUs (soma_instantiate, cmake/SomaInstantiate.cmake) and general_6r_{ceres,nlopt}.cpp.
+#include "soma/algebra/cpu_dispatch.hpp"
 #include "soma/algebra/sin_cos.hpp"
 #include "soma/algebra/small_eigenvalues.hpp"
 #include "soma/algebra/small_linalg.hpp"
@@ -11,6 +12,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <complex>
 #include <random>
@@ -40,9 +42,9 @@ template <class S> struct Link {
   S a, d, ca, sa;
 };
 template <class S> Link<S> linkOf(const DHRow<S>& r) {
-  using std::cos;
-  using std::sin;
-  return {r.a, r.d, cos(r.alpha), sin(r.alpha)};
+  Link<S> k{r.a, r.d, S(0), S(0)};
+  sinCos(r.alpha, k.sa, k.ca);
+  return k;
 }
 template <class S> Vec3<S> rx(const Link<S>& k, const Vec3<S>& v) {
   return Vec3<S>(v.x(), k.ca * v.y() - k.sa * v.z(), k.sa * v.y() + k.ca * v.z());
@@ -148,7 +150,18 @@ template <class S> struct Lu12 {
   bool ok = true;
   Lu12() = default;
   explicit Lu12(const M12<S>& m) { factor(m); }
+  /// Factors m; in double on a CPU with AVX2 and FMA by the AVX2 + FMA build of factorBody.
   void factor(const M12<S>& m) {
+#ifdef SOMA_X86_AVX2_DISPATCH
+    if constexpr (std::is_same_v<S, double>)
+      if (detail::cpuHasAvx2Fma()) return factorAvx2(m);
+#endif
+    factorBody(m);
+  }
+#ifdef SOMA_X86_AVX2_DISPATCH
+  SOMA_TARGET_AVX2_FMA void factorAvx2(const M12<S>& m) { factorBody(m); }
+#endif
+  [[gnu::always_inline]] inline void factorBody(const M12<S>& m) {
     using std::abs;
     // In hardware floating point every row update runs over all 12 columns (the entries left of
     // the pivot are zeros on both rows): a fixed trip count that vectorises, ~2× fewer
@@ -248,6 +261,18 @@ template <class S> struct Lu12 {
   /// X ← M⁻¹ X for K right-hand sides at once, row by row (each row update runs along the K
   /// columns: no dependency chain; the same operations in the same order as `solve` on each column).
   template <int K> void solveColumns(Eigen::Matrix<S, 12, K>& X) const {
+#ifdef SOMA_X86_AVX2_DISPATCH
+    if constexpr (std::is_same_v<S, double>)
+      if (detail::cpuHasAvx2Fma()) return solveColumnsAvx2<K>(X);
+#endif
+    solveColumnsBody<K>(X);
+  }
+#ifdef SOMA_X86_AVX2_DISPATCH
+  template <int K> SOMA_TARGET_AVX2_FMA void solveColumnsAvx2(Eigen::Matrix<S, 12, K>& X) const {
+    solveColumnsBody<K>(X);
+  }
+#endif
+  template <int K> [[gnu::always_inline]] inline void solveColumnsBody(Eigen::Matrix<S, 12, K>& X) const {
     Eigen::Matrix<S, 12, K, Eigen::RowMajor> y;
     for (int i = 0; i < 12; ++i) {
       y.row(i) = X.row(perm[i]);
@@ -275,6 +300,95 @@ template <class S> struct Lu12 {
   }
 };
 
+/// Householder QR with column pivoting of a 14×8 matrix, Q·R = M·P: Eigen's ColPivHouseholderQR
+/// (3.4, computeInPlace) step for step — the largest remaining column norm as pivot, the reflector
+/// of makeHouseholderInPlace, the norm downdate of LAPACK working note 176 with its recomputation,
+/// nonzero pivots counted against the same threshold — on fixed arrays (Eigen's runs on dynamic
+/// blocks at this size: 11.5k instructions a pose, this 6.9k). It differs from Eigen's only in
+/// rounding (a reciprocal where Eigen divides, another summation order). Layout as Eigen's
+/// matrixQR(): R on and above the diagonal, reflector k's essential part below it (its first
+/// entry 1 implied). Tested against ColPivHouseholderQR (tests/geometry/serial/general_6r_kernels.cpp).
+template <class S> struct Qr14x8 {
+  M14x8<S> qr;
+  S tau[8];        ///< reflector k is I − τ_k v vᵀ
+  int perm[8];     ///< column i of M·P is column perm[i] of M
+  int nonzero = 8; ///< Eigen's nonzeroPivots()
+  explicit Qr14x8(const M14x8<S>& m) : qr(m) {
+    using std::abs;
+    using std::sqrt;
+    constexpr int rows = 14, cols = 8;
+    const S eps = Tolerance<S>::epsilon();
+    S normU[cols], normD[cols];
+    S maxNorm = S(0);
+    for (int j = 0; j < cols; ++j) {
+      S t = S(0);
+      for (int i = 0; i < rows; ++i) t += qr(i, j) * qr(i, j);
+      normD[j] = normU[j] = sqrt(t);
+      if (j == 0 || normU[j] > maxNorm) maxNorm = normU[j];
+      perm[j] = j;
+    }
+    const S thresholdHelper = (maxNorm * eps) * (maxNorm * eps) / S(rows);
+    const S downdate = sqrt(eps);
+    for (int k = 0; k < cols; ++k) {
+      int big = k;
+      for (int j = k + 1; j < cols; ++j)
+        if (normU[j] > normU[big]) big = j;
+      if (nonzero == cols && normU[big] * normU[big] < thresholdHelper * S(rows - k)) nonzero = k;
+      if (big != k) {
+        for (int i = 0; i < rows; ++i) std::swap(qr(i, k), qr(i, big));
+        std::swap(normU[k], normU[big]);
+        std::swap(normD[k], normD[big]);
+        std::swap(perm[k], perm[big]);
+      }
+      // makeHouseholderInPlace on rows k..13 of column k
+      S tail = S(0);
+      for (int i = k + 1; i < rows; ++i) tail += qr(i, k) * qr(i, k);
+      const S c0 = qr(k, k);
+      S beta;
+      if (tail <= std::numeric_limits<S>::min()) {
+        tau[k] = S(0);
+        beta = c0;
+        for (int i = k + 1; i < rows; ++i) qr(i, k) = S(0);
+      } else {
+        beta = sqrt(c0 * c0 + tail);
+        if (c0 >= S(0)) beta = -beta;
+        const S inv = S(1) / (c0 - beta);
+        for (int i = k + 1; i < rows; ++i) qr(i, k) *= inv;
+        tau[k] = (beta - c0) / beta;
+      }
+      qr(k, k) = beta;
+      // applyHouseholderOnTheLeft on rows k..13 of columns k+1..7, with v padded by zeros above
+      // row k: every loop runs over the 14 rows (a fixed trip count; the zeros add nothing).
+      if (tau[k] != S(0)) {
+        S v[rows];
+        for (int i = 0; i < rows; ++i) v[i] = i > k ? S(qr(i, k)) : S(i == k ? 1 : 0);
+        for (int j = k + 1; j < cols; ++j) {
+          S* c = &qr(0, j);
+          S d = S(0);
+          for (int i = 0; i < rows; ++i) d += v[i] * c[i];
+          d *= tau[k];
+          for (int i = 0; i < rows; ++i) c[i] -= d * v[i];
+        }
+      }
+      for (int j = k + 1; j < cols; ++j) {  // norm downdate (LAWN 176, as xGEQPF)
+        if (normU[j] == S(0)) continue;
+        S t = abs(qr(k, j)) / normU[j];
+        t = (S(1) + t) * (S(1) - t);
+        if (t < S(0)) t = S(0);
+        const S ratio = normU[j] / normD[j];
+        if (t * (ratio * ratio) <= downdate) {
+          S sq = S(0);
+          for (int i = k + 1; i < rows; ++i) sq += qr(i, j) * qr(i, j);
+          normD[j] = normU[j] = sqrt(sq);
+        } else {
+          normU[j] *= sqrt(t);
+        }
+      }
+    }
+  }
+  const M14x8<S>& matrixQR() const { return qr; }
+};
+
 /// Working storage of the small eigenproblems: a fixed 24×24 array, the active size n ≤ 24.
 template <class S> using Work24 = Eigen::Matrix<S, 24, 24>;
 
@@ -294,7 +408,8 @@ template <class S> using Work24 = Eigen::Matrix<S, 24, 24>;
 /// when it is at round-off (Tolerance::identity(4096)); otherwise false and H still holds K.
 // Manocha & Canny (1994) eigenproblem; GF §11.5 (16 postures)
 template <class S>
-bool deflateExtraneous(Work24<S>& H, const M12<S>& A, const M12<S>& B, const M12<S>& C, S& defect) {
+[[gnu::always_inline]] inline bool deflateExtraneousBody(Work24<S>& H, const M12<S>& A, const M12<S>& B,
+                                                         const M12<S>& C, S& defect) {
   using std::abs;
   M12<S> zr = C - A, zi = B;  // M(i) = zr + i zi, eliminated in place
   std::array<int, 12> col;    // col[c]: the original column now at position c
@@ -443,6 +558,23 @@ bool deflateExtraneous(Work24<S>& H, const M12<S>& A, const M12<S>& B, const M12
   H.topLeftCorner(16, 16) = Nm.topLeftCorner(16, 16);
   return true;
 }
+#ifdef SOMA_X86_AVX2_DISPATCH
+template <class S>
+SOMA_TARGET_AVX2_FMA bool deflateExtraneousAvx2(Work24<S>& H, const M12<S>& A, const M12<S>& B, const M12<S>& C,
+                                                S& defect) {
+  return deflateExtraneousBody<S>(H, A, B, C, defect);
+}
+#endif
+/// deflateExtraneousBody; in double on a CPU with AVX2 and FMA by its AVX2 + FMA build
+/// (soma/algebra/cpu_dispatch.hpp).
+template <class S>
+bool deflateExtraneous(Work24<S>& H, const M12<S>& A, const M12<S>& B, const M12<S>& C, S& defect) {
+#ifdef SOMA_X86_AVX2_DISPATCH
+  if constexpr (std::is_same_v<S, double>)
+    if (detail::cpuHasAvx2Fma()) return deflateExtraneousAvx2<S>(H, A, B, C, defect);
+#endif
+  return deflateExtraneousBody<S>(H, A, B, C, defect);
+}
 
 /// The closed loop Rz(φ1)·K1·Rz(φ2)·K2···Rz(φ6)·K6 = I of a 6R chain reaching T: K_i = G_i =
 /// Tz(d_i)·Tx(a_i)·Rx(α_i) for i < 6 and K6 = G6·T⁻¹ (each K: v ↦ R v + t).
@@ -541,7 +673,7 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
   for (int c = 0; c < 8; ++c) Q.col(c) = H[c + 1];
 
   // Left null space of Q (6×14): the last 6 columns of the Householder Q of Q.
-  Eigen::ColPivHouseholderQR<M14x8<S>> qr(Q);
+  const Qr14x8<S> qr(Q);
   const S r00 = abs(qr.matrixQR()(0, 0)), r77 = abs(qr.matrixQR()(7, 7));
   out.qRank = r00 > S(0) ? toDouble(r77 / r00) : 0.0;
   if (!(r77 > Tolerance<S>::rank() * r00)) {
@@ -562,7 +694,7 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
   auto reflect = [&](int k, S* x) {  // x ← (I − τ_k v vᵀ) x, x of length 14
     S d = x[k];
     for (int i = k + 1; i < 14; ++i) d += qrm(i, k) * x[i];
-    d *= qr.hCoeffs()(k);
+    d *= qr.tau[k];
     x[k] -= d;
     for (int i = k + 1; i < 14; ++i) x[i] -= d * qrm(i, k);
   };
@@ -587,10 +719,11 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
     for (int r = 0; r < 12; ++r) {
       S m = S(0);
       for (int c = 0; c < 12; ++c) m = std::max<S>(m, std::max<S>(abs(A(r, c)), std::max<S>(abs(B(r, c)), abs(C(r, c)))));
-      if (m > S(0)) {
-        A.row(r) /= m;
-        B.row(r) /= m;
-        C.row(r) /= m;
+      if (m > S(0)) {  // one division a row (36 divisions a row took ~1 µs a pose)
+        const S im = S(1) / m;
+        A.row(r) *= im;
+        B.row(r) *= im;
+        C.row(r) *= im;
       }
     }
     luA.factor(A);
@@ -695,18 +828,31 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
   const S clusterTol = S(16) * Tolerance<S>::precision(3);  // a 4-fold cluster spreads by eps^(1/4)
   int nExtra = 0;
   std::vector<S> reals;
-  std::vector<std::complex<S>> roots, nearReal;  // the 16 (not ±i); those off the axis by < clusterTol
+  // the roots besides ±i, and those of them off the real axis by less than clusterTol (no heap:
+  // at most 24 eigenvalues)
+  std::array<std::complex<S>, 24> roots, nearReal;
+  int nRoots = 0, nNear = 0;
+  // The moduli |z ∓ i| and |z| (hypot, ~40 cycles a call) only where a component bound cannot
+  // decide: max(|a|, |b|) ≤ |a + ib| ≤ |a| + |b|, and the rounding is monotone, so the bounds give
+  // the decisions of the moduli themselves.
+  const S extR = extTol * S(16);
+  auto nearUnit = [&](const S& re, const S& imMinus) {  // |re + i·imMinus| < extR
+    const S ar = abs(re), ai = abs(imMinus);
+    if (!(ar < extR) || !(ai < extR)) return false;
+    return abs(std::complex<S>(ar, ai)) < extR;
+  };
   for (const auto& z : lambdas) {
-    const S dp = abs(z - std::complex<S>(S(0), S(1))), dm = abs(z + std::complex<S>(S(0), S(1)));
-    if (dp < extTol * S(16) || dm < extTol * S(16)) {
+    if (nearUnit(z.real(), S(z.imag() - S(1))) || nearUnit(z.real(), S(z.imag() + S(1)))) {
       ++nExtra;
       continue;
     }
-    roots.push_back(z);
-    if (abs(z.imag()) <= realTol * (S(1) + abs(z)))
+    roots[nRoots++] = z;
+    const S ai = abs(z.imag()), ar = abs(z.real());
+    if (ai <= realTol * (S(1) + ar)) reals.push_back(z.real());
+    else if (!(ai > realTol * (S(1) + S(ar + ai))) && ai <= realTol * (S(1) + abs(z)))
       reals.push_back(z.real());
-    else if (abs(z.imag()) <= clusterTol * (S(1) + abs(z)))
-      nearReal.push_back(z);
+    else if (!(ai > clusterTol * (S(1) + S(ar + ai))) && ai <= clusterTol * (S(1) + abs(z)))
+      nearReal[nNear++] = z;
   }
   // A k-fold cluster of real roots comes out of the eigensolver as points spread by eps^(1/k),
   // complex pairs among them. realTol = eps^(1/3) covers double and triple roots; a 4-fold cluster
@@ -717,14 +863,16 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
   // such a cluster: the answer is suspect and the caller re-solves in the next wider scalar. (A lone
   // near-real pair is a double root, decided by realTol, and is not flagged.)
   int inCluster = 0;
-  for (const auto& z : nearReal) {
+  for (int i = 0; i < nNear; ++i) {
+    const std::complex<S>& z = nearReal[i];
     int near = 0;
-    for (const auto& w : roots) near += w != z && abs(w - z) <= clusterTol * (S(1) + abs(z));
+    for (int j = 0; j < nRoots; ++j) near += roots[j] != z && abs(roots[j] - z) <= clusterTol * (S(1) + abs(z));
     inCluster += near >= 3;
   }
   if (inCluster > 0) {
     out.suspicious = true;
     out.notes.push_back(std::to_string(inCluster) + " complex eigenvalue(s) in a cluster of 4 or more within 16 eps^(1/4) of the real axis (some may be real postures)");
+  }
   }
   out.complexCount = int(lambdas.size()) - nExtra;
   if (out.deflated) out.complexCount = 16 - nExtra;  // lambdas holds the 16 after deflation
@@ -794,23 +942,27 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
     Eigen::Matrix<S, 8, 1> u = Eigen::Matrix<S, 8, 1>::Zero();
     {
       V14<S> c = rhs;
-      const int nz = int(qr.nonzeroPivots());
+      const int nz = qr.nonzero;
       for (int k = 0; k < nz; ++k) reflect(k, c.data());
       for (int i = nz - 1; i >= 0; --i) {
         S v = c(i);
         for (int k = i + 1; k < nz; ++k) v -= qrm(i, k) * c(k);
         c(i) = v / qrm(i, i);
       }
-      for (int i = 0; i < nz; ++i) u(qr.colsPermutation().indices()(i)) = c(i);
+      for (int i = 0; i < nz; ++i) u(qr.perm[i]) = c(i);
     }
     // u = (c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2)
     phi[0] = atan2(u(5), u(2));
     phi[1] = atan2(u(1), u(0));
     // θ6 from the loop: Rz(θ6) = (Rz(θ1)K1···Rz(θ5)K5)ᵀ-rotation · K6ᵀ-rotation.
+    // (cos, sin) of θ3, θ4, θ5 as computed above: the same values, three sincos calls fewer.
     Mat3<S> R = Mat3<S>::Identity();
     for (int i = 0; i < 5; ++i) {
       S c, s;
-      sinCos(phi[i], s, c);
+      if (i == 2) c = c3, s = s3;
+      else if (i == 3) c = t4[1], s = t4[2];
+      else if (i == 4) c = t5[1], s = t5[2];
+      else sinCos(phi[i], s, c);
       Mat3<S> Z;
       Z << c, -s, S(0), s, c, S(0), S(0), S(0), S(1);
       R = (R * Z * K.R[i]).eval();
