@@ -873,7 +873,6 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
     out.suspicious = true;
     out.notes.push_back(std::to_string(inCluster) + " complex eigenvalue(s) in a cluster of 4 or more within 16 eps^(1/4) of the real axis (some may be real postures)");
   }
-  }
   out.complexCount = int(lambdas.size()) - nExtra;
   if (out.deflated) out.complexCount = 16 - nExtra;  // lambdas holds the 16 after deflation
   if (out.complexCount != 16) {
