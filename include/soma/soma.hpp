@@ -10,6 +10,7 @@
 #include <soma/algebra/clifford/multivector.hpp>
 #include <soma/algebra/clifford/quadratic_form.hpp>
 #include <soma/algebra/clifford/signature.hpp>
+#include <soma/algebra/cpu_dispatch.hpp>
 #include <soma/algebra/double_quaternion.hpp>
 #include <soma/algebra/dual_quaternion.hpp>
 #include <soma/algebra/errors.hpp>
