@@ -805,20 +805,40 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
     out.notes.push_back("leading matrix singular for every θ3 offset: generalized eigenproblem "
                         "(QZ) of the 24×24 pencil");
     out.suspicious = true;
-    // GeneralizedEigenSolver::info() asserts when its QZ did not converge (Eigen 3.4 sets "values
-    // okay" only on success; found by the sanitized build, where Eigen's assertions are on), so the
-    // convergence is asked of RealQZ itself first; the solver's own QZ then repeats the same
-    // deterministic iteration. Reached only when every θ3 offset leaves the leading matrix singular.
-    if (Eigen::RealQZ<M24<S>>(L0, L1, false).info() != Eigen::Success) {
+    // One RealQZ, its eigenvalues read off the generalized Schur pair (S, T) below. Not
+    // GeneralizedEigenSolver: its values are unusable when the QZ did not converge (its info()
+    // asserts), and a second QZ on the same pencil to ask first is not the same iteration: after 23
+    // iterations on one eigenvalue Eigen's RealQZ takes "extremely ad hoc" shifts from std::rand(),
+    // so one run converges and the next may not (found by the sanitized build in float128: 98 and
+    // 734 iterations on one pencil). Reached only when every θ3 offset leaves the leading matrix
+    // singular.
+    const Eigen::RealQZ<M24<S>> qz(L0, L1, false);
+    if (qz.info() != Eigen::Success) {
       out.notes.push_back("the QZ iteration did not converge: no eigenvalues");
       return out;
     }
-    Eigen::GeneralizedEigenSolver<M24<S>> ges(L0, L1, false);
-    for (int i = 0; i < 24; ++i) {
-      const S be = ges.betas()(i);
-      const std::complex<S> al = ges.alphas()(i);
+    const M24<S>& Sm = qz.matrixS();
+    const M24<S>& Tm = qz.matrixT();
+    auto keep = [&](const std::complex<S>& al, const S& be) {  // infinite eigenvalues dropped
       if (abs(be) > Tolerance<S>::rank() * (abs(al) + abs(be)))
         lambdas.push_back(std::complex<S>(al.real() / be, al.imag() / be));
+    };
+    for (int i = 0; i < 24;) {
+      if (i == 23 || Sm(i + 1, i) == S(0)) {  // a 1×1 block: a real eigenvalue
+        keep(std::complex<S>(Sm(i, i)), Tm(i, i));
+        ++i;
+        continue;
+      }
+      // A 2×2 block of S over a diagonal 2×2 block of T (RealQZ makes it so on success): with
+      // β = t00·t11 the pair is α/β, α the eigenvalues of S₂·diag(t11, t00) (as Eigen's solver).
+      const S t0 = Tm(i, i), t1 = Tm(i + 1, i + 1), be = t0 * t1;
+      const S s00 = Sm(i, i) * t1, s01 = Sm(i, i + 1) * t0, s10 = Sm(i + 1, i) * t1,
+              s11 = Sm(i + 1, i + 1) * t0;
+      const S p = S(0.5) * (s00 - s11);
+      const S z = sqrt(abs(S(p * p + s10 * s01)));
+      keep(std::complex<S>(s11 + p, be > S(0) ? z : S(-z)), be);
+      keep(std::complex<S>(s11 + p, be > S(0) ? S(-z) : z), be);
+      i += 2;
     }
   }
 
