@@ -2,7 +2,7 @@
 # Install soma's build and run dependencies on Debian 12 (run as root; idempotent).
 set -euo pipefail
 packages=(
-  build-essential clang-14 libclang-rt-14-dev cmake ninja-build ccache pkg-config git
+  build-essential clang-14 libclang-rt-14-dev lld cmake ninja-build ccache pkg-config git
   libeigen3-dev libmpfr-dev libgmp-dev libmpfrc++-dev
   libfmt-dev nlohmann-json3-dev libcli11-dev libpng-dev libtbb-dev
   libosmesa6-dev libfreetype-dev fonts-dejavu-core
