@@ -3,6 +3,8 @@
 // Called from GF-5.3.5-burmester-count.
 #include "gf05/planar_common.hpp"
 
+#include <algorithm>
+#include <limits>
 #include <random>
 
 namespace soma::studies::gf05p {  // not per-file (SOMA_UNITY_ID): it defines functions other chapter files call
@@ -102,16 +104,29 @@ void synthesisFigures(Context& c) {
            "Five positions from a random crank-rocker: the centre-point curves of {1,2,3,4} and {1,2,3,5} meet at the poles "
            "P12, P13, P23 (spurious, grey), at the circular points at infinity, and at " + std::to_string(pairs.size()) +
                " real Burmester centre points (red); two of them are the original ground pivots.");
-  // Figure 2: the synthesized 4-bar (the first two real pairs that form a working linkage) in its five positions
+  // Figure 2: the synthesized 4-bar in its five positions. Of the pairs of real Burmester pairs that
+  // form a working linkage (every position reached on one circuit), the most compact one is drawn:
+  // the smallest distance of its pivots, in every position, from the positions' centroid (the first
+  // working pair found could reach 80 units away from positions 2 units apart, and hid them).
+  V2 centroid = V2::Zero();
+  for (const auto& p : shown.positions) centroid += p.translation() / double(shown.positions.size());
+  auto extent = [&](const auto& pa, const auto& pb) {
+    double e = std::max((pa.centre - centroid).norm(), (pb.centre - centroid).norm());
+    for (const auto& M : shown.positions)
+      e = std::max({e, (M.act(pa.circle) - centroid).norm(), (M.act(pb.circle) - centroid).norm()});
+    return e;
+  };
   int ia = -1, ib = -1;
-  for (int a = 0; a < int(pairs.size()) && ia < 0; ++a)
+  double best = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < int(pairs.size()); ++a)
     for (int b = 0; b < int(pairs.size()); ++b) {
       if (a == b) continue;
       const auto dc = bs.drive(pairs[a], pairs[b]);
-      if (dc.reached && dc.sameCircuit && dc.worstTranslation < 1e-9) {
+      const double e = extent(pairs[a], pairs[b]);
+      if (dc.reached && dc.sameCircuit && dc.worstTranslation < 1e-9 && e < best) {
+        best = e;
         ia = a;
         ib = b;
-        break;
       }
     }
   if (ia < 0) return;
