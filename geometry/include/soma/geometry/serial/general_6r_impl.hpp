@@ -118,10 +118,61 @@ template <class S> M12<S> toPolynomialBlock(const M6x9<S>& X) {
   return M;
 }
 
+/// Six joint angles with the cosines and sines of the angles they stand for (the joint variables
+/// plus any fixed offsets), formed together: the back-substitution gets the cosines and sines
+/// from ratios (no sin/cos call), and the polish turns them by each Newton step (no sin/cos call
+/// per evaluation of the chain). The angles themselves are only added to.
+template <class S> struct Posture6 {
+  std::array<S, 6> q, c, s;
+};
+
+/// (cos 2φ, sin 2φ) for φ = atan2(n, d), from the ratio: ((d² − n²), 2nd) / (n² + d²), with n and
+/// d scaled by the larger first (no overflow); (1, 0) when n = d = 0, as atan2(0, 0) = 0.
+template <class S> void doubleAngleOf(const S& n, const S& d, S& c, S& s) {
+  using std::abs;
+  const S m = std::max<S>(abs(n), abs(d));
+  if (!(m > S(0))) {
+    c = S(1), s = S(0);
+    return;
+  }
+  const S a = n / m, b = d / m, h = S(1) / (a * a + b * b);
+  c = (b - a) * (b + a) * h;
+  s = S(2) * a * b * h;
+}
+
+/// (cos φ, sin φ) for φ = atan2(y, x): (x, y) / |(x, y)|, scaled first; (1, 0) at the origin.
+template <class S> void unitAngleOf(const S& y, const S& x, S& c, S& s) {
+  using std::abs;
+  using std::sqrt;
+  const S m = std::max<S>(abs(x), abs(y));
+  if (!(m > S(0))) {
+    c = S(1), s = S(0);
+    return;
+  }
+  const S a = x / m, b = y / m, h = S(1) / sqrt(a * a + b * b);
+  c = a * h;
+  s = b * h;
+}
+
+/// sin and cos of a Newton step's angle δ: below 2⁻⁷ by their Taylor series to δ⁵ and δ⁶ (the
+/// first terms left out, δ⁷/5040 and δ⁸/40320, are below 2⁻⁵⁴ relative), otherwise by sinCos.
+template <class S> void stepSinCos(const S& d, S& sd, S& cd) {
+  using std::abs;
+  if constexpr (std::is_same_v<S, double> || std::is_same_v<S, float>) {
+    if (abs(d) <= S(0.0078125)) {
+      const S d2 = d * d;
+      sd = d * (S(1) - d2 / S(6) * (S(1) - d2 / S(20)));
+      cd = S(1) - d2 / S(2) * (S(1) - d2 / S(12) * (S(1) - d2 / S(30)));
+      return;
+    }
+  }
+  sinCos(d, sd, cd);
+}
+
 /// What the eigenproblem produced: candidate total joint angles (θ_i + q_i) in the unit-scaled
 /// problem, and its diagnostics.
 template <class S> struct Core {
-  std::vector<std::array<S, 6>> phi;
+  std::vector<Posture6<S>> phi;
   std::vector<S> x3;  ///< the real eigenvalue each candidate came from
   int complexCount = 0;
   double rcond = 0, beta = 0, minGap = 0, qRank = 0;
@@ -172,14 +223,34 @@ template <class S> struct Lu12 {
       perm[i] = i;
       for (int j = 0; j < 12; ++j) a[i][j] = m(i, j);
     }
+    // The pivot row: the first of the largest of v[r], r = c..11, compared in two interleaved
+    // chains (even and odd rows) joined at the end (one chain of 11 compares was a third of the
+    // factorisation's critical path).
+    auto firstLargest = [](const S* v, int c) {
+      S b0 = v[c], b1 = S(-1);
+      int i0 = c, i1 = c;
+      int r = c + 1;
+      for (; r + 1 < 12; r += 2) {
+        if (v[r] > b1) b1 = v[r], i1 = r;
+        if (v[r + 1] > b0) b0 = v[r + 1], i0 = r + 1;
+      }
+      if (r < 12 && v[r] > b1) b1 = v[r], i1 = r;
+      return b1 > b0 || (b1 == b0 && i1 < i0) ? i1 : i0;
+    };
+    S w[12];
+    for (int r = 0; r < 12; ++r) w[r] = abs(a[r][0]);
+    int p = firstLargest(w, 0);
     for (int c = 0; c < 12; ++c) {
-      int p = c;
-      S best = abs(a[c][c]);
-      for (int r = c + 1; r < 12; ++r)
-        if (abs(a[r][c]) > best) best = abs(a[r][c]), p = r;
-      if (best == S(0)) {
-        ok = false;
-        return;
+      // p was chosen (below) from the entries of column c times the pivot before them, formed
+      // without 1/pivot: the search overlaps the division and the row updates. The entry it
+      // chose is the largest up to rounding; if it is exactly zero, the entries are searched.
+      if (a[p][c] == S(0)) {
+        for (int r = c; r < 12; ++r) w[r] = abs(a[r][c]);
+        p = firstLargest(w, c);
+        if (a[p][c] == S(0)) {
+          ok = false;
+          return;
+        }
       }
       if (p != c) {
         for (int j = 0; j < 12; ++j) std::swap(a[p][j], a[c][j]);
@@ -187,6 +258,11 @@ template <class S> struct Lu12 {
         std::swap(perm[p], perm[c]);
       }
       rdiag[c] = S(1) / a[c][c];
+      if (c + 1 < 12) {  // column c + 1 after this elimination, times the pivot u = a[c][c]
+        const S u = a[c][c], h = a[c][c + 1];
+        for (int r = c + 1; r < 12; ++r) w[r] = abs(S(a[r][c + 1] * u - a[r][c] * h));
+        p = firstLargest(w, c + 1);
+      }
       for (int r = c + 1; r < 12; ++r) {
         const S f = a[r][c] * rdiag[c];
         l[r][c] = f;
@@ -411,22 +487,41 @@ template <class S>
 [[gnu::always_inline]] inline bool deflateExtraneousBody(Work24<S>& H, const M12<S>& A, const M12<S>& B,
                                                          const M12<S>& C, S& defect) {
   using std::abs;
+  using std::sqrt;
   M12<S> zr = C - A, zi = B;  // M(i) = zr + i zi, eliminated in place
   std::array<int, 12> col;    // col[c]: the original column now at position c
   for (int c = 0; c < 12; ++c) col[c] = c;
   defect = S(1);
   const S thr2 = Tolerance<S>::epsilon();  // (√eps)²: pivots compared in squared modulus
-  S first2 = S(0);
-  int rank = 0;
-  // The pivot of step k + 1 is searched while step k updates the trailing block (same order,
-  // column by column, as a separate search: the same pivots, one pass less over the block).
-  int p = 0, q = 0;
-  S best = S(-1);
-  for (int j = 0; j < 12; ++j)
+  // The pivot is the first entry of largest squared modulus in column-major order, found from
+  // the columns' maxima (each column's a short chain of its own; one chain through the whole
+  // block kept the search on the critical path): the same pivot as a search entry by entry.
+  std::array<S, 12> colMax;
+  std::array<int, 12> colArg;
+  auto pivotOf = [&](int k, int& p, int& q) {
+    S best = S(-1);
+    q = k;
+    for (int j = k; j < 12; ++j)
+      if (colMax[j] > best) best = colMax[j], q = j;
+    p = colArg[q];
+    return best;
+  };
+  for (int j = 0; j < 12; ++j) {
+    S m = S(-1);
+    int a = 0;
     for (int i = 0; i < 12; ++i) {
       const S m2 = zr(i, j) * zr(i, j) + zi(i, j) * zi(i, j);
-      if (m2 > best) best = m2, p = i, q = j;
+      const bool g = m2 > m;
+      m = g ? m2 : m;
+      a = g ? i : a;
     }
+    colMax[j] = m;
+    colArg[j] = a;
+  }
+  S first2 = S(0);
+  int rank = 0;
+  int p = 0, q = 0;
+  S best = pivotOf(0, p, q);
   for (int k = 0; k < 12; ++k) {
     if (k == 0) first2 = best;
     if (!(best > thr2 * first2) || !(best > S(0))) break;
@@ -435,127 +530,153 @@ template <class S>
     zr.col(k).swap(zr.col(q));
     zi.col(k).swap(zi.col(q));
     std::swap(col[k], col[q]);
+    std::swap(colMax[k], colMax[q]);
+    std::swap(colArg[k], colArg[q]);
     const S pr = zr(k, k), pim = zi(k, k), inv = S(1) / best;  // 1 / pivot = conj(pivot) / |pivot|²
-    std::array<S, 12> fr, fi;
+    std::array<S, 12> fr{}, fi{};
     for (int i = k + 1; i < 12; ++i) {
       fr[i] = (zr(i, k) * pr + zi(i, k) * pim) * inv;
       fi[i] = (zi(i, k) * pr - zr(i, k) * pim) * inv;
       zr(i, k) = zi(i, k) = S(0);
     }
     rank = k + 1;
-    best = S(-1);
-    p = q = k + 1;
+    if (k == 11) break;
     for (int j = k + 1; j < 12; ++j) {
       const S ur = zr(k, j), ui = zi(k, j);
+      S m = S(-1);
+      int a = k + 1;
       for (int i = k + 1; i < 12; ++i) {
-        const S r = zr(i, j) - (fr[i] * ur - fi[i] * ui), m = zi(i, j) - (fr[i] * ui + fi[i] * ur);
+        const S r = zr(i, j) - (fr[i] * ur - fi[i] * ui), t = zi(i, j) - (fr[i] * ui + fi[i] * ur);
         zr(i, j) = r;
-        zi(i, j) = m;
-        const S m2 = r * r + m * m;
-        if (m2 > best) best = m2, p = i, q = j;
+        zi(i, j) = t;
+        const S m2 = r * r + t * t;
+        const bool g = m2 > m;
+        m = g ? m2 : m;
+        a = g ? i : a;
       }
+      colMax[j] = m;
+      colArg[j] = a;
     }
+    best = pivotOf(k + 1, p, q);
   }
   if (rank != 8) return false;
-  Eigen::Matrix<S, 24, 8> W;  // columns 2j, 2j + 1: (Re w, −Im w) for w = v_j and i v_j
-  for (int j = 0; j < 4; ++j) {
-    // Kernel vector in the permuted order: y_{8+j} = 1, the others of 8..11 zero, y_0..7 from U11 y = −U12 e_j.
-    std::array<S, 12> yr{}, yi{};
-    yr[8 + j] = S(1);
-    for (int r = 7; r >= 0; --r) {
+  // The kernel: y_{8+j} = 1, the others of 8..11 zero, y_0..7 from U11 y = −U12 e_j, the four
+  // right-hand sides together, each pivot's reciprocal conj(u)/|u|² formed once.
+  std::array<S, 8> ur, ui;
+  for (int r = 0; r < 8; ++r) {
+    const S d2 = S(1) / (zr(r, r) * zr(r, r) + zi(r, r) * zi(r, r));
+    ur[r] = zr(r, r) * d2;
+    ui[r] = -zi(r, r) * d2;
+  }
+  S yr[4][12] = {}, yi[4][12] = {};
+  for (int j = 0; j < 4; ++j) yr[j][8 + j] = S(1);
+  for (int r = 7; r >= 0; --r)
+    for (int j = 0; j < 4; ++j) {
       S sr = -zr(r, 8 + j), si = -zi(r, 8 + j);
       for (int c = r + 1; c < 8; ++c) {
-        sr -= zr(r, c) * yr[c] - zi(r, c) * yi[c];
-        si -= zr(r, c) * yi[c] + zi(r, c) * yr[c];
+        sr -= zr(r, c) * yr[j][c] - zi(r, c) * yi[j][c];
+        si -= zr(r, c) * yi[j][c] + zi(r, c) * yr[j][c];
       }
-      const S d2 = zr(r, r) * zr(r, r) + zi(r, r) * zi(r, r);
-      yr[r] = (sr * zr(r, r) + si * zi(r, r)) / d2;
-      yi[r] = (si * zr(r, r) - sr * zi(r, r)) / d2;
+      yr[j][r] = sr * ur[r] - si * ui[r];
+      yi[j][r] = sr * ui[r] + si * ur[r];
     }
+  Eigen::Matrix<S, 24, 8> W;  // columns 2j, 2j + 1: (Re w, −Im w) for w = v_j and i v_j
+  for (int j = 0; j < 4; ++j)
     for (int c = 0; c < 12; ++c) {
       const int i = col[c];
-      W(i, 2 * j) = yr[c];
-      W(12 + i, 2 * j) = -yi[c];
-      W(i, 2 * j + 1) = -yi[c];
-      W(12 + i, 2 * j + 1) = -yr[c];
+      W(i, 2 * j) = yr[j][c];
+      W(12 + i, 2 * j) = -yi[j][c];
+      W(i, 2 * j + 1) = -yi[j][c];
+      W(12 + i, 2 * j + 1) = -yr[j][c];
     }
-  }
   // Gauss–Jordan with complete pivoting on the columns of W: W Z1⁻¹ = [I; G] on its pivot rows
   // (8 rows p_k; G the 16×8 rest, |G| small by the pivoting). With Π the permutation putting the
   // pivot rows first and T = [[I, 0], [−G, I]]Π, T W = [I; 0]: T K T⁻¹ is block upper triangular,
   // its trailing block N = K22 − G K12 (16×16) carries the 16 genuine eigenvalues and its
   // lower-left block D = N G + K21 − G K11 vanishes up to round-off. This elementary similarity
   // costs ~2k multiply-adds where the 8 Householder reflectors on both sides of K cost ~16k.
+  // A pivot row is zero in every column not yet used (set so below): the search needs no mask.
   std::array<int, 8> prow, pcol;
   std::array<bool, 24> isPivot{};
   std::array<bool, 8> usedCol{};
   for (int k = 0; k < 8; ++k) {
-    int p = -1, c = -1;
-    S best = S(0);
+    int pr = -1, c = -1;
+    S bestW = S(0);
     for (int j = 0; j < 8; ++j) {
       if (usedCol[j]) continue;
-      for (int i = 0; i < 24; ++i)
-        if (!isPivot[i] && abs(W(i, j)) > best) best = abs(W(i, j)), p = i, c = j;
+      S m = S(0);
+      for (int i = 0; i < 24; ++i) m = std::max<S>(m, abs(W(i, j)));
+      if (m > bestW) bestW = m, c = j;
     }
-    if (p < 0) return false;
-    isPivot[p] = usedCol[c] = true;
-    prow[k] = p;
+    if (c < 0) return false;
+    pr = 0;
+    while (pr < 23 && !(abs(W(pr, c)) == bestW)) ++pr;
+    isPivot[pr] = usedCol[c] = true;
+    prow[k] = pr;
     pcol[k] = c;
-    const S inv = S(1) / W(p, c);
+    const S inv = S(1) / W(pr, c);
     for (int i = 0; i < 24; ++i) W(i, c) *= inv;
-    W(p, c) = S(1);
+    W(pr, c) = S(1);
     for (int j = 0; j < 8; ++j) {
       if (j == c) continue;
-      const S f = W(p, j);
+      const S f = W(pr, j);
       if (f == S(0)) continue;
       for (int i = 0; i < 24; ++i) W(i, j) -= f * W(i, c);
-      W(p, j) = S(0);
+      W(pr, j) = S(0);
     }
   }
   std::array<int, 16> rest;
   for (int i = 0, r = 0; i < 24; ++i)
     if (!isPivot[i]) rest[r++] = i;
-  Eigen::Matrix<S, 16, 8> G;
-  S gn = S(0);
+  // The blocks of Π K Πᵀ, contiguous (the products below vectorise).
+  Eigen::Matrix<S, 16, 8> G, K21;
+  Eigen::Matrix<S, 8, 16> K12;
+  Eigen::Matrix<S, 8, 8> K11;
+  Eigen::Matrix<S, 16, 16> K22;
   for (int k = 0; k < 8; ++k)
-    for (int r = 0; r < 16; ++r) {
-      G(r, k) = W(rest[r], pcol[k]);
-      gn += G(r, k) * G(r, k);
-    }
-  using std::sqrt;
-  gn = sqrt(gn);
-  const S kn = H.norm();
-  // N = K22 − G K12 into a fresh 16×16 block (H still holds K).
-  Work24<S> Nm;
-  for (int s = 0; s < 16; ++s) {
-    const int cs = rest[s];
-    for (int r = 0; r < 16; ++r) Nm(r, s) = H(rest[r], cs);
+    for (int r = 0; r < 16; ++r) G(r, k) = W(rest[r], pcol[k]);
+  for (int s = 0; s < 16; ++s)
+    for (int r = 0; r < 16; ++r) K22(r, s) = H(rest[r], rest[s]);
+  for (int s = 0; s < 16; ++s)
+    for (int k = 0; k < 8; ++k) K12(k, s) = H(prow[k], rest[s]);
+  for (int l = 0; l < 8; ++l) {
+    for (int r = 0; r < 16; ++r) K21(r, l) = H(rest[r], prow[l]);
+    for (int k = 0; k < 8; ++k) K11(k, l) = H(prow[k], prow[l]);
+  }
+  const S gn = G.norm(), kn = H.norm();
+  // Plain loops, not Eigen's products: those are built for the TU's instruction set (SSE2), these
+  // are vectorised by the compiler for this function's (AVX2 + FMA in deflateExtraneousAvx2). The
+  // rows of K with a pivot in the upper half are unit vectors (K = [[0, I], [·, ·]]): their zeros
+  // are skipped.
+  Eigen::Matrix<S, 16, 16> Nm = K22;
+  for (int s = 0; s < 16; ++s)
     for (int k = 0; k < 8; ++k) {
-      const S f = H(prow[k], cs);
+      const S f = K12(k, s);
       if (f != S(0))
         for (int r = 0; r < 16; ++r) Nm(r, s) -= G(r, k) * f;
     }
-  }
   // D = N G + K21 − G K11, measured as the backward error it stands for in K's coordinates:
   // ‖T⁻¹ [[0, 0], [D, 0]] T‖ ≤ (1 + ‖G‖)² ‖D‖.
-  S dn = S(0);
+  S dn = S(0), dn2[16] = {};  // sums of squares by row: no chain through one sum
   for (int l = 0; l < 8; ++l) {
-    std::array<S, 16> d;
-    for (int r = 0; r < 16; ++r) d[r] = H(rest[r], prow[l]);
+    S d[16];
+    for (int r = 0; r < 16; ++r) d[r] = K21(r, l);
     for (int s = 0; s < 16; ++s) {
       const S g = G(s, l);
       for (int r = 0; r < 16; ++r) d[r] += Nm(r, s) * g;
     }
     for (int k = 0; k < 8; ++k) {
-      const S f = H(prow[k], prow[l]);
-      for (int r = 0; r < 16; ++r) d[r] -= G(r, k) * f;
+      const S f = K11(k, l);
+      if (f != S(0))
+        for (int r = 0; r < 16; ++r) d[r] -= G(r, k) * f;
     }
-    for (int r = 0; r < 16; ++r) dn += d[r] * d[r];
+    for (int r = 0; r < 16; ++r) dn2[r] += d[r] * d[r];
   }
+  for (int r = 0; r < 16; ++r) dn += dn2[r];
   const S grow = (S(1) + gn) * (S(1) + gn);
   defect = kn > S(0) ? S(grow * sqrt(dn) / kn) : S(1);
   if (!(defect <= Tolerance<S>::identity(4096))) return false;
-  H.topLeftCorner(16, 16) = Nm.topLeftCorner(16, 16);
+  H.template topLeftCorner<16, 16>() = Nm;
   return true;
 }
 #ifdef SOMA_X86_AVX2_DISPATCH
@@ -692,14 +813,22 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
   // per application, this ~0.3k).
   const M14x8<S>& qrm = qr.matrixQR();
   auto reflect = [&](int k, S* x) {  // x ← (I − τ_k v vᵀ) x, x of length 14
-    S d = x[k];
-    for (int i = k + 1; i < 14; ++i) d += qrm(i, k) * x[i];
-    d *= qr.tau[k];
+    // vᵀx as two partial sums (odd and even i: two chains of dependent adds, each half as long)
+    S d = x[k], d1 = S(0);
+    int i = k + 1;
+    for (; i + 1 < 14; i += 2) {
+      d += qrm(i, k) * x[i];
+      d1 += qrm(i + 1, k) * x[i + 1];
+    }
+    if (i < 14) d += qrm(i, k) * x[i];
+    d = (d + d1) * qr.tau[k];
     x[k] -= d;
-    for (int i = k + 1; i < 14; ++i) x[i] -= d * qrm(i, k);
+    for (int j = k + 1; j < 14; ++j) x[j] -= d * qrm(j, k);
   };
-  for (int j = 0; j < 6; ++j)
-    for (int k = 7; k >= 0; --k) reflect(k, &Q6(0, j));
+  // Reflector after reflector, each on the 6 columns (6 independent dot products in flight; column
+  // after column, each column's 8 applications are one chain of dependent sums).
+  for (int k = 7; k >= 0; --k)
+    for (int j = 0; j < 6; ++j) reflect(k, &Q6(0, j));
   const Eigen::Matrix<S, 6, 14> N = Q6.transpose();
   std::array<M6x9<S>, 3> Sig;
   for (int k = 0; k < 3; ++k) Sig[k].noalias() = N.lazyProduct(P[k]);
@@ -707,7 +836,7 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
   // θ3 = β + ψ, x3 = tan(ψ/2): M(x3) = (Σ1 − Σc')x3² + 2Σs'x3 + (Σ1 + Σc'). Pick β so that the
   // leading matrix is invertible (β = 0 unless θ3 = π is, nearly, a root: the root at infinity).
   M12<S> A, B, C;
-  S rc = S(-1), beta = S(0);
+  S rc = S(-1), beta = S(0), cBeta = S(1), sBeta = S(0);
   Lu12<S> luA;
   auto build = [&](const S& b) {
     const S cb = cos(b), sb = sin(b);
@@ -750,38 +879,46 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
                         " (rcond " + toString(toDouble(bestRc), 3) + ")");
     rc = build(bestBeta);
     beta = bestBeta;
+    sinCos(beta, sBeta, cBeta);
   }
   out.rcond = toDouble(rc);
   out.beta = toDouble(beta);
   if (probe) return out;
 
   std::vector<std::complex<S>> lambdas;
+  lambdas.reserve(24);  // one allocation, not one per doubling (the vectors here are per pose)
   if (rc > Tolerance<S>::rank()) {
-    Work24<S> H = Work24<S>::Zero();
-    H.template topRightCorner<12, 12>().setIdentity();
-    {  // −A⁻¹[C B] with the LU of A factored for its rcond (rc > 0: no zero pivot), the 24
-       // right-hand sides together (Eigen's blocked solve cost ~50k instructions here; 24 solves
-       // of one column each are chains of dependent multiply-adds)
-      Eigen::Matrix<S, 12, 24> y;
-      y.template leftCols<12>() = C;
-      y.template rightCols<12>() = B;
-      luA.solveColumns(y);
-      H.template bottomRows<12>() = -y;
-    }
-    // The 8 extraneous eigenvalues x3 = ±i are deflated first (the QR iteration on 16×16 costs
-    // about (16/24)³ ≈ 0.3 of the 24×24 one); when the deflation is not clean the full matrix is
-    // used. Eigenvalues by a fixed-size Francis QR; Eigen's EigenSolver if that does not converge.
+    // The companion matrix K = [[0, I], [−A⁻¹C, −A⁻¹B]] in H, then its 8 extraneous eigenvalues
+    // x3 = ±i deflated (the QR iteration on 16×16 costs about (16/24)³ ≈ 0.3 of the 24×24 one);
+    // when the deflation is not clean the full matrix is used. Eigenvalues by a fixed-size Francis
+    // QR; Eigen's EigenSolver if that does not converge, on the same matrix formed again (not a
+    // copy kept ahead of every QR).
     S defect = S(0);
-    const bool deflated = deflateExtraneous<S>(H, A, B, C, defect);
+    auto formK = [&](Work24<S>& H) {
+      H.template topRows<12>().setZero();
+      H.template topRightCorner<12, 12>().setIdentity();
+      {  // −A⁻¹[C B] with the LU of A factored for its rcond (rc > 0: no zero pivot), the 24
+         // right-hand sides together (Eigen's blocked solve cost ~50k instructions here; 24 solves
+         // of one column each are chains of dependent multiply-adds)
+        Eigen::Matrix<S, 12, 24> y;
+        y.template leftCols<12>() = C;
+        y.template rightCols<12>() = B;
+        luA.solveColumns(y);
+        H.template bottomRows<12>() = -y;
+      }
+      return deflateExtraneous<S>(H, A, B, C, defect);
+    };
+    Work24<S> H;
+    const bool deflated = formK(H);
     const int n = deflated ? 16 : 24;
     out.deflationDefect = toDouble(defect);
     out.deflated = deflated;
     if (!deflated)
       out.notes.push_back("deflation of x3 = ±i not clean (defect " + toString(toDouble(defect), 3) +
                           "): full 24×24 eigenproblem");
-    const Work24<S> Hn = H;
     if (!detail::smallEigenvalues<S, 24>(H, n, lambdas)) {
-      const MX<S> Kn = Hn.topLeftCorner(n, n);
+      formK(H);
+      const MX<S> Kn = H.topLeftCorner(n, n);
       out.notes.push_back("Francis QR did not converge on the " + std::to_string(n) + "×" +
                           std::to_string(n) + " matrix: Eigen's EigenSolver used");
       lambdas.clear();
@@ -848,6 +985,7 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
   const S clusterTol = S(16) * Tolerance<S>::precision(3);  // a 4-fold cluster spreads by eps^(1/4)
   int nExtra = 0;
   std::vector<S> reals;
+  reals.reserve(24);
   // the roots besides ±i, and those of them off the real axis by less than clusterTol (no heap:
   // at most 24 eigenvalues)
   std::array<std::complex<S>, 24> roots, nearReal;
@@ -914,6 +1052,8 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
   }
 
   // Back-substitution for each real x3.
+  out.phi.reserve(reals.size());
+  out.x3.reserve(reals.size());
   for (const S& x : reals) {
     const M12<S> M = (A * x + B) * x + C;
     const Lu12<S> lu(M);
@@ -944,14 +1084,21 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
           d5 += vj * vj;
         }
       }
-    std::array<S, 6> phi;
-    phi[2] = beta + S(2) * atan(x);
-    phi[3] = halfAngleFromPairs(n4, d4);
-    phi[4] = halfAngleFromPairs(n5, d5);
+    // Angles by atan and atan2; their cosines and sines from the same ratios (no sin/cos call).
+    Posture6<S> phi;
+    phi.q[2] = beta + S(2) * atan(x);
+    phi.q[3] = halfAngleFromPairs(n4, d4);
+    phi.q[4] = halfAngleFromPairs(n5, d5);
     S c3, s3, t4[3] = {S(1), S(0), S(0)}, t5[3] = {S(1), S(0), S(0)};
-    sinCos(phi[2], s3, c3);
-    sinCos(phi[3], t4[2], t4[1]);
-    sinCos(phi[4], t5[2], t5[1]);
+    {
+      S ca, sa;  // of 2·atan(x) = 2·atan2(x, 1) = 2·atan2(1, 1/x) ± 2π
+      if (abs(x) <= S(1)) doubleAngleOf(x, S(1), ca, sa);
+      else doubleAngleOf(S(1), S(S(1) / x), ca, sa);
+      c3 = cBeta * ca - sBeta * sa;
+      s3 = sBeta * ca + cBeta * sa;
+    }
+    doubleAngleOf(n4, d4, t4[1], t4[2]);
+    doubleAngleOf(n5, d5, t5[1], t5[2]);
     Eigen::Matrix<S, 9, 1> m45;
     for (int i4 = 0; i4 < 3; ++i4)
       for (int i5 = 0; i5 < 3; ++i5) m45(i4 * 3 + i5) = t4[i4] * t5[i5];
@@ -971,23 +1118,24 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
       for (int i = 0; i < nz; ++i) u(qr.perm[i]) = c(i);
     }
     // u = (c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2)
-    phi[0] = atan2(u(5), u(2));
-    phi[1] = atan2(u(1), u(0));
+    phi.q[0] = atan2(u(5), u(2));
+    phi.q[1] = atan2(u(1), u(0));
+    unitAngleOf(u(5), u(2), phi.c[0], phi.s[0]);
+    unitAngleOf(u(1), u(0), phi.c[1], phi.s[1]);
+    phi.c[2] = c3, phi.s[2] = s3;
+    phi.c[3] = t4[1], phi.s[3] = t4[2];
+    phi.c[4] = t5[1], phi.s[4] = t5[2];
     // θ6 from the loop: Rz(θ6) = (Rz(θ1)K1···Rz(θ5)K5)ᵀ-rotation · K6ᵀ-rotation.
-    // (cos, sin) of θ3, θ4, θ5 as computed above: the same values, three sincos calls fewer.
     Mat3<S> R = Mat3<S>::Identity();
     for (int i = 0; i < 5; ++i) {
-      S c, s;
-      if (i == 2) c = c3, s = s3;
-      else if (i == 3) c = t4[1], s = t4[2];
-      else if (i == 4) c = t5[1], s = t5[2];
-      else sinCos(phi[i], s, c);
+      const S c = phi.c[i], s = phi.s[i];
       Mat3<S> Z;
       Z << c, -s, S(0), s, c, S(0), S(0), S(0), S(1);
       R = (R * Z * K.R[i]).eval();
     }
     const Mat3<S> R6 = R.transpose() * K.R[5].transpose();
-    phi[5] = atan2(R6(1, 0), R6(0, 0));
+    phi.q[5] = atan2(R6(1, 0), R6(0, 0));
+    unitAngleOf(R6(1, 0), R6(0, 0), phi.c[5], phi.s[5]);
     out.phi.push_back(phi);
     out.x3.push_back(x);
   }
@@ -998,22 +1146,37 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
 /// Rz(θ)·Tz(d)·Tx(a)·Rx(α), translation (a cos θ, a sin θ, d)), θ_i = offset_i + q_i; the axes
 /// z_i and origins o_i of the joints when asked (the spatial Jacobian's columns). GF §3.4 / §4.5
 template <class S>
-void chainForward(const std::array<Link<S>, 6>& L, const std::array<S, 6>& offset,
-                  const std::array<S, 6>& q, Mat3<S>& R, Vec3<S>& t, std::array<Vec3<S>, 6>* z = nullptr,
-                  std::array<Vec3<S>, 6>* o = nullptr) {
+void chainForwardTrig(const std::array<Link<S>, 6>& L, const std::array<S, 6>& cs, const std::array<S, 6>& sn,
+                      Mat3<S>& R, Vec3<S>& t, std::array<Vec3<S>, 6>* z = nullptr,
+                      std::array<Vec3<S>, 6>* o = nullptr) {
   R.setIdentity();
   t.setZero();
   for (int i = 0; i < 6; ++i) {
     if (z) (*z)[i] = R.col(2);
     if (o) (*o)[i] = t;
-    const S th = offset[i] + q[i];
-    S c, s;
-    sinCos(th, s, c);
+    const S c = cs[i], s = sn[i];
     t += R * Vec3<S>(L[i].a * c, L[i].a * s, L[i].d);
     Mat3<S> Ai;
     Ai << c, -s * L[i].ca, s * L[i].sa, s, c * L[i].ca, -c * L[i].sa, S(0), L[i].sa, L[i].ca;
     R = (R * Ai).eval();
   }
+}
+/// chainForwardTrig at the angles θ_i = offset_i + q_i.
+template <class S>
+void chainForward(const std::array<Link<S>, 6>& L, const std::array<S, 6>& offset,
+                  const std::array<S, 6>& q, Mat3<S>& R, Vec3<S>& t, std::array<Vec3<S>, 6>* z = nullptr,
+                  std::array<Vec3<S>, 6>* o = nullptr) {
+  std::array<S, 6> c, s;
+  for (int i = 0; i < 6; ++i) sinCos(S(offset[i] + q[i]), s[i], c[i]);
+  chainForwardTrig(L, c, s, R, t, z, o);
+}
+
+/// A Posture6 of the joint variables q (angles offset_i + q_i), by sinCos.
+template <class S> Posture6<S> posture6Of(const std::array<S, 6>& offset, const std::array<S, 6>& q) {
+  Posture6<S> x;
+  x.q = q;
+  for (int i = 0; i < 6; ++i) sinCos(S(offset[i] + q[i]), x.s[i], x.c[i]);
+  return x;
 }
 
 /// general6rResidual on precomputed links: max(|R(q) − R*|_F, |t(q) − t*| / scale).
@@ -1026,16 +1189,18 @@ S residualOf(const Mat3<S>& R, const Vec3<S>& t, const Mat3<S>& RT, const Vec3<S
 
 /// Newton steps on the pose equations (spatial Jacobian, GF §4.5), each kept only while the
 /// error falls; none when the posture's residual is already ≤ `stop`, and none after it is.
-/// Returns the residual of the final q.
+/// Each step δ adds to the angles and turns their cosines and sines by δ (stepSinCos).
+/// Returns the residual of the final posture.
 template <class S>
-S polishLinks(const std::array<Link<S>, 6>& L, const std::array<S, 6>& offset, const Mat3<S>& RT,
-              const Vec3<S>& tT, const S& scale, std::array<S, 6>& q, int iterations, const S& stop) {
+S polishLinks(const std::array<Link<S>, 6>& L, const Mat3<S>& RT, const Vec3<S>& tT, const S& scale,
+              Posture6<S>& q, int iterations, const S& stop) {
+  using std::abs;
   using M6 = Eigen::Matrix<S, 6, 6>;
-  auto evaluate = [&](const std::array<S, 6>& qq, M6* J, S& res) {
+  auto evaluate = [&](const Posture6<S>& qq, M6* J, S& res) {
     Mat3<S> R;
     Vec3<S> t;
     std::array<Vec3<S>, 6> z, o;
-    chainForward(L, offset, qq, R, t, &z, &o);
+    chainForwardTrig(L, qq.c, qq.s, R, t, &z, &o);
     res = residualOf(R, t, RT, tT, scale);
     const Mat3<S> E = RT * R.transpose();
     Vec6<S> e;
@@ -1058,8 +1223,19 @@ S polishLinks(const std::array<Link<S>, 6>& L, const std::array<S, 6>& offset, c
     // PartialPivLU of this 6×6 costs ~7k instructions a posture, this ~1k); a zero pivot stops.
     Vec6<S> dq = e;
     if (!(detail::smallSolveInPlace<S, 6>(J, dq) > S(0)) || !allFinite(dq)) break;
-    std::array<S, 6> qn = q;
-    for (int i = 0; i < 6; ++i) qn[i] += dq(i);
+    Posture6<S> qn;
+    for (int i = 0; i < 6; ++i) {
+      // A step beyond ±π is taken modulo 2π (the same point of the circle), so that the angle
+      // stays small and keeps the accuracy of its cosine and sine (a step of 6e10 rad, from a
+      // singular Jacobian, left the angle 1e-5 rad off them).
+      S d = dq(i);
+      if (!(abs(d) <= pi<S>())) d = wrapAngle(d);
+      S sd, cd;
+      stepSinCos(d, sd, cd);
+      qn.q[i] = q.q[i] + d;
+      qn.c[i] = q.c[i] * cd - q.s[i] * sd;
+      qn.s[i] = q.s[i] * cd + q.c[i] * sd;
+    }
     M6 Jn;
     S resn;
     const Vec6<S> en = evaluate(qn, &Jn, resn);
@@ -1121,10 +1297,11 @@ std::array<S, 6> polishGeneral6R(const Robot6R<S>& robot, const SE3<S>& target,
                                  std::array<S, 6> q, int iterations) {
   std::array<S, 6> off;
   const auto L = detail6r::linksOf(robot, &off);
-  detail6r::polishLinks(L, off, target.rotation(), target.translation(),
-                        detail6r::lengthScale(robot, target.translation()), q, iterations,
+  detail6r::Posture6<S> x = detail6r::posture6Of(off, q);
+  detail6r::polishLinks(L, target.rotation(), target.translation(),
+                        detail6r::lengthScale(robot, target.translation()), x, iterations,
                         detail6r::polishStop<S>());
-  return q;
+  return x.q;
 }
 
 template <class S>
@@ -1197,10 +1374,12 @@ General6RSolution<S> solveGeneral6R(const Robot6R<S>& robot, const SE3<S>& targe
     if (bestShift != 0 || bestReverse) {
       detail6r::Core<S> alt = detail6r::eigenCore(detail6r::relabelled(loop, bestShift, bestReverse));
       for (auto& phi : alt.phi) {
-        const std::array<S, 6> p = phi;
+        const detail6r::Posture6<S> p = phi;
         for (int i = 0; i < 6; ++i) {
           const int j = detail6r::relabelledJoint(i, bestShift, bestReverse);
-          phi[j] = bestReverse ? S(-p[i]) : p[i];
+          phi.q[j] = bestReverse ? S(-p.q[i]) : p.q[i];
+          phi.c[j] = p.c[i];
+          phi.s[j] = bestReverse ? S(-p.s[i]) : p.s[i];
         }
       }
       core = std::move(alt);
@@ -1216,31 +1395,37 @@ General6RSolution<S> solveGeneral6R(const Robot6R<S>& robot, const SE3<S>& targe
   const S accept = Tolerance<S>::sqrtEpsilon();
   const S full = Tolerance<S>::identity(4096);
   const S same = Tolerance<S>::precision(2);
-  std::vector<std::array<S, 6>> found;  // totals φ in the unit-scaled problem
+  std::vector<detail6r::Posture6<S>> found;  // totals φ in the unit-scaled problem, wrapped
   std::vector<S> res;
+  found.reserve(core.phi.size());
+  res.reserve(core.phi.size());
   int failed = 0, merged = 0;
-  const std::array<S, 6> zero{};
-  std::array<S, 6> offN;  // zero: rn has θ offsets 0
-  const auto Ln = detail6r::linksOf(rn, &offN);
+  const std::array<S, 6> zero{};  // rn has θ offsets 0
+  const auto Ln = detail6r::linksOf<S>(rn, nullptr);
   const S scaleN = detail6r::lengthScale(rn, tT);
-  auto addCandidate = [&](const std::array<S, 6>& phi0) {
-    std::array<S, 6> phi = phi0;
-    const S r = detail6r::polishLinks(Ln, zero, RT, tT, scaleN, phi, options.polish_iterations,
+  auto addCandidate = [&](const detail6r::Posture6<S>& phi0) {
+    detail6r::Posture6<S> x = phi0;
+    const S r = detail6r::polishLinks(Ln, RT, tT, scaleN, x, options.polish_iterations,
                                       detail6r::polishStop<S>());
-    for (auto& a : phi) a = wrapAngle(a);
+    for (int i = 0; i < 6; ++i) x.q[i] = wrapAngle(x.q[i]);
     if (!(r <= accept)) return 1;
     for (std::size_t k = 0; k < found.size(); ++k) {
+      // |a − b| mod 2π for a, b in [−π, π] (|a − b| ≤ 2π): no trigonometric call
       S d = S(0);
-      for (int i = 0; i < 6; ++i) d = std::max<S>(d, abs(wrapAngle(S(phi[i] - found[k][i]))));
+      for (int i = 0; i < 6; ++i) {
+        S e = abs(S(x.q[i] - found[k].q[i]));
+        if (e > pi<S>()) e = S(2) * pi<S>() - e;
+        d = std::max<S>(d, e);
+      }
       if (d < same) {
         if (r < res[k]) {
-          found[k] = phi;
+          found[k] = x;
           res[k] = r;
         }
         return 2;
       }
     }
-    found.push_back(phi);
+    found.push_back(x);
     res.push_back(r);
     return 0;
   };
@@ -1272,7 +1457,7 @@ General6RSolution<S> solveGeneral6R(const Robot6R<S>& robot, const SE3<S>& targe
       for (const auto& p : hi.postures) {
         std::array<S, 6> phi;
         for (int i = 0; i < 6; ++i) phi[i] = scalarCast<S>(p(i));
-        addCandidate(phi);
+        addCandidate(detail6r::posture6Of(zero, phi));
       }
       if (found.size() > before)
         sol.notes.push_back(std::to_string(found.size() - before) + " posture(s) added by the re-solve");
@@ -1284,13 +1469,17 @@ General6RSolution<S> solveGeneral6R(const Robot6R<S>& robot, const SE3<S>& targe
 
   std::array<S, 6> off;
   const auto Lr = detail6r::linksOf(robot, &off);
+  sol.postures.reserve(found.size());
+  sol.residuals.reserve(found.size());
   for (std::size_t k = 0; k < found.size(); ++k) {
     JointVector<S> q(6);
     std::array<S, 6> qa;
     for (int i = 0; i < 6; ++i) {
-      qa[i] = wrapAngle(S(found[k][i] - robot[i].theta));
+      qa[i] = wrapAngle(S(found[k].q[i] - robot[i].theta));
       q(i) = qa[i];
     }
+    // The residual of the returned q itself (not of the cosines and sines the polish carried,
+    // which agree with it only up to the rounding of the steps added to the angles).
     Mat3<S> Rq;
     Vec3<S> tq;
     detail6r::chainForward(Lr, off, qa, Rq, tq);
