@@ -47,10 +47,16 @@ template <class S, int N>
       any = any || y[i] != S(0);
     }
     if (!any) continue;
-    for (int j = m; j < n; ++j) {  // rows i -= y_i · row m (column by column: contiguous)
+    // Rows i -= y_i · row m, column by column (contiguous). In hardware floating point from the
+    // row of four that holds row m + 1 on, with y_i = 0 above it (such a row is left as it was):
+    // whole vectors, no scalar remainder when n is a multiple of four (16 and 24 here).
+    constexpr bool hw = std::is_same_v<S, double> || std::is_same_v<S, float>;
+    const int i0 = hw ? ((m + 1) & ~3) : m + 1;
+    for (int i = i0; i <= m; ++i) y[i] = S(0);
+    for (int j = m; j < n; ++j) {
       const S hm = H(m, j);
       if (hm != S(0))
-        for (int i = m + 1; i < n; ++i) H(i, j) -= y[i] * hm;
+        for (int i = i0; i < n; ++i) H(i, j) -= y[i] * hm;
     }
     // Column m += Σ_i y_i · column i, each entry summed in a register in the order i = m+1, …
     // (the same sums as column after column, without a store and reload per column).
