@@ -109,3 +109,52 @@ TEST_CASE("general 6R kernels: Qr14x8 agrees with Eigen's ColPivHouseholderQR", 
 }
 
 }  // namespace SOMA_UNITY_ID
+
+namespace SOMA_UNITY_ID {
+
+// The trigonometry of the back-substitution and the polish without sin/cos calls (Posture6):
+// doubleAngleOf(n, d) = (cos, sin) of 2·atan2(n, d), unitAngleOf(y, x) = (cos, sin) of atan2(y, x),
+// stepSinCos(δ) = (sin δ, cos δ), against the library functions of each scalar, at random
+// arguments over many magnitudes, at zero, and on both sides of stepSinCos's switch |δ| = 1.
+// Each is a few roundings of a well-conditioned formula: 8 eps (a handful of ulps of values ≤ 1).
+TEMPLATE_TEST_CASE("general 6R kernels: cosines and sines from ratios and small steps match sin and cos",
+                   "[sixr][kernels]", SOMA_TEST_SCALARS) {
+  using S = TestType;
+  using std::atan2;
+  using std::cos;
+  using std::ldexp;
+  using std::sin;
+  auto& g = test::rng(20261207);
+  const S tol = S(8) * Tolerance<S>::epsilon();
+  for (int t = 0; t < 200; ++t) {
+    const int e = t % 40 - 20;  // magnitudes 2^−20 … 2^19
+    const S n = ldexp(test::uniform<S>(g), e), d = ldexp(test::uniform<S>(g), t % 7 - 3);
+    S c, s;
+    detail6r::doubleAngleOf(n, d, c, s);
+    const S phi = S(2) * atan2(n, d);
+    INFO("t " << t << " n " << toDouble(n) << " d " << toDouble(d));
+    CHECK(abs(S(c - cos(phi))) <= tol);
+    CHECK(abs(S(s - sin(phi))) <= tol);
+    detail6r::unitAngleOf(n, d, c, s);
+    CHECK(abs(S(c - cos(atan2(n, d)))) <= tol);
+    CHECK(abs(S(s - sin(atan2(n, d)))) <= tol);
+    const S delta = t % 2 == 0 ? ldexp(test::uniform<S>(g), -(t % 30)) : S(test::uniform<S>(g) * S(3));
+    detail6r::stepSinCos(delta, s, c);
+    INFO("delta " << toDouble(delta));
+    CHECK(abs(S(s - sin(delta))) <= tol * std::max<S>(S(1), abs(delta)));
+    CHECK(abs(S(c - cos(delta))) <= tol);
+  }
+  for (const S delta : {S(1), S(-1), S(1) + Tolerance<S>::epsilon(), S(0)}) {
+    S s, c;
+    detail6r::stepSinCos(delta, s, c);
+    CHECK(abs(S(s - sin(delta))) <= tol);
+    CHECK(abs(S(c - cos(delta))) <= tol);
+  }
+  S c, s;
+  detail6r::doubleAngleOf(S(0), S(0), c, s);  // atan2(0, 0) = 0
+  CHECK((c == S(1) && s == S(0)));
+  detail6r::unitAngleOf(S(0), S(0), c, s);
+  CHECK((c == S(1) && s == S(0)));
+}
+
+}  // namespace SOMA_UNITY_ID

@@ -5,6 +5,7 @@
 #include "soma/algebra/sin_cos.hpp"
 #include "soma/algebra/small_eigenvalues.hpp"
 #include "soma/algebra/small_linalg.hpp"
+#include "soma/algebra/taylor.hpp"
 #include "soma/geometry/serial/general_6r.hpp"
 #include "soma/algebra/wrap_angle.hpp"
 
@@ -154,17 +155,18 @@ template <class S> void unitAngleOf(const S& y, const S& x, S& c, S& s) {
   s = b * h;
 }
 
-/// sin and cos of a Newton step's angle δ: below 2⁻⁷ by their Taylor series to δ⁵ and δ⁶ (the
-/// first terms left out, δ⁷/5040 and δ⁸/40320, are below 2⁻⁵⁴ relative), otherwise by sinCos.
+/// sin and cos of a Newton step's angle δ. For |δ| ≤ 1 (the range of the series in
+/// algebra/taylor.hpp, summed to the scalar's precision) sin δ = δ − δ³·(δ − sin δ)/δ³ and
+/// cos δ = √((1 − sin δ)(1 + sin δ)) (cos δ > 0.54 there: no cancellation), a few multiply-adds
+/// and a square root instead of a library sincos; sinCos beyond.
 template <class S> void stepSinCos(const S& d, S& sd, S& cd) {
   using std::abs;
-  if constexpr (std::is_same_v<S, double> || std::is_same_v<S, float>) {
-    if (abs(d) <= S(0.0078125)) {
-      const S d2 = d * d;
-      sd = d * (S(1) - d2 / S(6) * (S(1) - d2 / S(20)));
-      cd = S(1) - d2 / S(2) * (S(1) - d2 / S(12) * (S(1) - d2 / S(30)));
-      return;
-    }
+  using std::sqrt;
+  if (abs(d) <= S(1)) {
+    const S d2 = d * d;
+    sd = d - d * d2 * detail::thetaMinusSinOverCube(d2);
+    cd = sqrt(S((S(1) - sd) * (S(1) + sd)));
+    return;
   }
   sinCos(d, sd, cd);
 }
@@ -601,7 +603,7 @@ template <class S>
   std::array<bool, 24> isPivot{};
   std::array<bool, 8> usedCol{};
   for (int k = 0; k < 8; ++k) {
-    int pr = -1, c = -1;
+    int c = -1;
     S bestW = S(0);
     for (int j = 0; j < 8; ++j) {
       if (usedCol[j]) continue;
@@ -610,7 +612,7 @@ template <class S>
       if (m > bestW) bestW = m, c = j;
     }
     if (c < 0) return false;
-    pr = 0;
+    int pr = 0;
     while (pr < 23 && !(abs(W(pr, c)) == bestW)) ++pr;
     isPivot[pr] = usedCol[c] = true;
     prow[k] = pr;
@@ -1162,22 +1164,21 @@ void chainForwardTrig(const std::array<Link<S>, 6>& L, const std::array<S, 6>& c
     R = (R * Ai).eval();
   }
 }
-/// chainForwardTrig at the angles θ_i = offset_i + q_i.
-template <class S>
-void chainForward(const std::array<Link<S>, 6>& L, const std::array<S, 6>& offset,
-                  const std::array<S, 6>& q, Mat3<S>& R, Vec3<S>& t, std::array<Vec3<S>, 6>* z = nullptr,
-                  std::array<Vec3<S>, 6>* o = nullptr) {
-  std::array<S, 6> c, s;
-  for (int i = 0; i < 6; ++i) sinCos(S(offset[i] + q[i]), s[i], c[i]);
-  chainForwardTrig(L, c, s, R, t, z, o);
-}
-
 /// A Posture6 of the joint variables q (angles offset_i + q_i), by sinCos.
 template <class S> Posture6<S> posture6Of(const std::array<S, 6>& offset, const std::array<S, 6>& q) {
   Posture6<S> x;
   x.q = q;
   for (int i = 0; i < 6; ++i) sinCos(S(offset[i] + q[i]), x.s[i], x.c[i]);
   return x;
+}
+
+/// chainForwardTrig at the angles θ_i = offset_i + q_i.
+template <class S>
+void chainForward(const std::array<Link<S>, 6>& L, const std::array<S, 6>& offset,
+                  const std::array<S, 6>& q, Mat3<S>& R, Vec3<S>& t, std::array<Vec3<S>, 6>* z = nullptr,
+                  std::array<Vec3<S>, 6>* o = nullptr) {
+  const Posture6<S> x = posture6Of(offset, q);
+  chainForwardTrig(L, x.c, x.s, R, t, z, o);
 }
 
 /// general6rResidual on precomputed links: max(|R(q) − R*|_F, |t(q) − t*| / scale).
