@@ -146,6 +146,50 @@ TEMPLATE_TEST_CASE("small eigenvalues: a matrix so small that p² + q² + r² le
     }
 }
 
+TEMPLATE_TEST_CASE("small eigenvalues: the same relative accuracy at every scale of the input", "[small_eigenvalues]",
+                   float, double, long double) {
+  // The bulge steps form products of three entries (β's multiply-adds); a norm outside 2^±16
+  // (float) or 2^±64 is scaled by a power of two first. A normal matrix with a known spectrum times
+  // 2^e, for e from the subnormal edge to the overflow edge, both sides of the band and of the
+  // range where p² + q² + r² leaves the normal range: the spectrum is 2^e times the known one
+  // (scaling by a power of two is exact), to 2^e times the unscaled error bound.
+  using S = TestType;
+  using C = std::complex<S>;
+  using L = std::numeric_limits<S>;
+  auto& g = test::rng(20261206);
+  const int band = std::is_same_v<S, float> ? 16 : 64;
+  const std::vector<int> exps = {L::min_exponent + L::digits / 2, L::min_exponent / 2, (L::min_exponent + L::digits / 2) / 2,
+                                 -band - 1, -band, -1, 0, 1, band, band + 1, L::max_exponent / 3,
+                                 L::max_exponent / 2, L::max_exponent - 12};
+  for (const int e : exps)
+    for (int n = 3; n <= 16; n += 13)
+      for (int trial = 0; trial < 2; ++trial) {
+        const S scale = std::ldexp(S(1), e);
+        const auto [a, want] = normalWithSpectrum<S>(g, n);
+        Eigen::Matrix<S, 24, 24> h = Eigen::Matrix<S, 24, 24>::Zero();
+        h.topLeftCorner(n, n) = a * scale;
+        REQUIRE(h.allFinite());
+        std::vector<C> got;
+        REQUIRE(detail::smallEigenvalues<S, 24>(h, n, got));
+        REQUIRE(int(got.size()) == n);
+        // as in the first test, before scaling; near the subnormal edge the entries below
+        // 2^(min exponent) lose bits: n² of them, each off by at most the smallest subnormal
+        const S tol = S(n) * S(n + 1) * Tolerance<S>::epsilon() * a.norm() + S(n * n) * L::denorm_min() / scale;
+        std::vector<bool> used(want.size(), false);
+        for (const auto& z : got) {
+          const C zu(z.real() / scale, z.imag() / scale);
+          int best = -1;
+          for (int j = 0; j < int(want.size()); ++j)
+            if (!used[j] && (best < 0 || std::abs(want[j] - zu) < std::abs(want[best] - zu))) best = j;
+          REQUIRE(best >= 0);
+          used[best] = true;
+          INFO("n " << n << " scale 2^" << e << " eigenvalue/scale " << toDouble(zu.real()) << " + "
+                    << toDouble(zu.imag()) << "i");
+          CHECK(std::abs(zu - want[best]) <= tol);
+        }
+      }
+}
+
 TEST_CASE("small eigenvalues: random matrices agree with Eigen's EigenSolver within κ × backward error",
           "[small_eigenvalues]") {
   auto& g = test::rng(20261205);

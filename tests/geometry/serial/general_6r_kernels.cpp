@@ -62,6 +62,40 @@ TEST_CASE("general 6R kernels: Lu12 rcond and solves agree with Eigen's PartialP
   }
 }
 
+TEMPLATE_TEST_CASE("general 6R kernels: Lu12 factorisations in lockstep are the one-at-a-time ones", "[sixr][kernels]",
+                   float, double, long double) {
+  // factorTogether (the back-substitution's roots, up to four at once) interleaves the columns of
+  // independent factorisations; each must come out as Lu12::factor alone makes it, bit for bit,
+  // also when one of them meets an exactly zero pivot (ok = false) and stops.
+  using S = TestType;
+  using M = detail6r::M12<S>;
+  auto& g = test::rng(20261207);
+  for (int t = 0; t < 50; ++t) {
+    const int n = 1 + t % 4;
+    std::array<M, 4> ms;
+    for (int k = 0; k < n; ++k)
+      for (int i = 0; i < 12; ++i)
+        for (int j = 0; j < 12; ++j) ms[k](i, j) = test::uniform<S>(g);
+    if (t % 5 == 3) ms[n - 1].col(5).setZero();  // singular: stops at column 5
+    std::array<detail6r::Lu12<S>, 4> together;
+    detail6r::factorTogether<S>(together.data(), ms.data(), n);
+    for (int k = 0; k < n; ++k) {
+      INFO("batch " << t << " matrix " << k << " of " << n);
+      const detail6r::Lu12<S> alone(ms[k]);
+      REQUIRE(together[k].ok == alone.ok);
+      CHECK(together[k].ok == !(t % 5 == 3 && k == n - 1));
+      if (!alone.ok) continue;
+      bool same = true;
+      for (int i = 0; i < 12; ++i) {
+        same = same && together[k].perm[i] == alone.perm[i] && together[k].rdiag[i] == alone.rdiag[i];
+        for (int j = 0; j < 12; ++j)
+          same = same && together[k].a[i][j] == alone.a[i][j] && (j >= i || together[k].l[i][j] == alone.l[i][j]);
+      }
+      CHECK(same);
+    }
+  }
+}
+
 TEST_CASE("general 6R kernels: Qr14x8 agrees with Eigen's ColPivHouseholderQR", "[sixr][kernels]") {
   // The same algorithm (pivot = largest remaining column norm, LAWN 176 downdates): the same
   // column permutation, |R(i,i)| within rounding of Eigen's, and Q·R = M·P within the backward

@@ -91,6 +91,7 @@ inline __float128 fmin(__float128 x, __float128 y) { return fminq(x, y); }
 inline __float128 fmax(__float128 x, __float128 y) { return fmaxq(x, y); }
 inline __float128 copysign(__float128 x, __float128 y) { return copysignq(x, y); }
 inline __float128 ldexp(__float128 x, int e) { return ldexpq(x, e); }
+inline __float128 frexp(__float128 x, int* e) { return frexpq(x, e); }
 inline bool isnan(__float128 x) { return isnanq(x); }
 inline bool isinf(__float128 x) { return isinfq(x); }
 inline bool isfinite(__float128 x) { return finiteq(x); }

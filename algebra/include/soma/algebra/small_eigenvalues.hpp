@@ -9,6 +9,7 @@
 // the flops of Householder's and is the EISPACK RG path's. Checked against Eigen's EigenSolver
 // (tests/algebra/small_eigenvalues.cpp).
 #include "soma/algebra/cpu_dispatch.hpp"
+#include "soma/algebra/sub_scaled4.hpp"
 #include "soma/algebra/tolerance.hpp"
 
 #include <Eigen/Core>
@@ -55,8 +56,11 @@ template <class S, int N>
     for (int i = i0; i <= m; ++i) y[i] = S(0);
     for (int j = m; j < n; ++j) {
       const S hm = H(m, j);
-      if (hm != S(0))
-        for (int i = i0; i < n; ++i) H(i, j) -= y[i] * hm;
+      if (hm == S(0)) continue;
+      int i = i0;
+      if constexpr (hw)
+        for (; i + 4 <= n; i += 4) subScaled4(&H(i, j), &y[i], hm);
+      for (; i < n; ++i) H(i, j) -= y[i] * hm;
     }
     // Column m += Σ_i y_i · column i, each entry summed in a register in the order i = m+1, …
     // (the same sums as column after column, without a store and reload per column).
@@ -85,12 +89,15 @@ template <class S, int N>
 /// (EISPACK HQR), exceptional shifts at the 10th and 20th iteration of an eigenvalue. Each bulge
 /// step's reflector is formed from p² + q² + r² directly when that sum can neither overflow nor
 /// underflow (HQR's scaling by |p| + |q| + |r| costs a division on the step's dependency chain),
-/// scaled otherwise. Returns
+/// scaled otherwise, and applied as I − β u uᵀ with one division (HQR's form takes two, and the
+/// next step's p, q, r waited on both). Returns
 /// false when an eigenvalue needed more than 60 iterations (lambda then incomplete).
 template <class S, int N>
 [[gnu::always_inline]] inline bool smallHessenbergEigenvaluesBody(Eigen::Matrix<S, N, N>& H, int n,
                                                                   std::vector<std::complex<S>>& lambda) {
   using std::abs;
+  using std::frexp;
+  using std::ldexp;
   using std::sqrt;
   lambda.clear();
   const S eps = Tolerance<S>::epsilon();
@@ -101,6 +108,23 @@ template <class S, int N>
     for (int i = 0; i < n; ++i) lambda.emplace_back(S(0), S(0));
     return true;
   }
+  // The bulge steps form products of three entries (T below). A norm 2^e outside 2^±16 (float)
+  // or 2^±64 (wider scalars; their products then stay within 2^±200 of the range's ends) is
+  // scaled by a power of two (exact) to [1/2, 1) first and the eigenvalues scaled back: in range at
+  // any scale of the input (entries below the smallest normal times 2^e, negligible, lose bits).
+  // 2^e in two factors: 2^±e alone leaves the range for a norm near the largest or a subnormal one.
+  int e = 0;
+  if (norm - norm == S(0)) (void)frexp(norm, &e);  // finite
+  constexpr int band = std::is_same_v<S, float> ? 16 : 64;
+  if (e >= -band && e <= band) e = 0;
+  const S up1 = ldexp(S(1), e / 2), up2 = ldexp(S(1), e - e / 2);
+  if (e != 0) {
+    const S f1 = ldexp(S(1), -(e / 2)), f2 = ldexp(S(1), -(e - e / 2));
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i <= std::min(j + 1, n - 1); ++i) H(i, j) = H(i, j) * f1 * f2;
+    norm = norm * f1 * f2;
+  }
+  auto push = [&](const S& re, const S& im) { lambda.emplace_back(re * up1 * up2, im * up1 * up2); };
   // Sums of squares in [tiny, big] are formed without scaling (no division on the bulge's path).
   const S tiny = std::numeric_limits<S>::min() / eps, big = std::numeric_limits<S>::max();
   int hi = n - 1, its = 0;
@@ -118,7 +142,7 @@ template <class S, int N>
     }
     const S x = H(hi, hi);
     if (lo == hi) {  // a real eigenvalue splits off
-      lambda.emplace_back(x + shiftTotal, S(0));
+      push(x + shiftTotal, S(0));
       --hi;
       its = 0;
       continue;
@@ -130,11 +154,11 @@ template <class S, int N>
       if (q >= S(0)) {
         const S zz = p >= S(0) ? S(p + z) : S(p - z);
         const S e1 = x + zz, e2 = zz != S(0) ? S(x - w / zz) : e1;
-        lambda.emplace_back(e1 + shiftTotal, S(0));
-        lambda.emplace_back(e2 + shiftTotal, S(0));
+        push(e1 + shiftTotal, S(0));
+        push(e2 + shiftTotal, S(0));
       } else {
-        lambda.emplace_back(x + p + shiftTotal, z);
-        lambda.emplace_back(x + p + shiftTotal, -z);
+        push(x + p + shiftTotal, z);
+        push(x + p + shiftTotal, -z);
       }
       hi -= 2;
       its = 0;
@@ -182,7 +206,7 @@ template <class S, int N>
         r = last ? S(0) : H(k + 2, k - 1);
       }
       carried = false;
-      S ss = p * p + q * q + r * r;
+      S ss = p * p + (q * q + r * r);  // r first: it is ready before p and q
       if (!(ss >= tiny && ss <= big)) {  // scaled against overflow and underflow
         scale = abs(p) + abs(q) + abs(r);
         if (scale == S(0)) continue;
@@ -199,45 +223,50 @@ template <class S, int N>
       } else {
         H(k, k - 1) = -sn * scale;
       }
-      p += sn;
-      const S isn = S(1) / sn, ip = S(1) / p;
-      const S vx = p * isn, vy = q * isn, vz = r * isn;
-      q *= ip;
-      r *= ip;
       if (!last) {
+        // The reflector I − β u uᵀ, u = (p + sn, q, r), β = 1 / (sn (p + sn)) = 1 / (ss + p·sn)
+        // (= 2 / |u|², no cancellation: p and sn share their sign), w = β u. One division, and the
+        // products with u need only q and r before the square root is done.
+        const S u0 = p + sn, beta = S(1) / (p * sn + ss);
+        const S w0 = beta * u0, w1 = beta * q, w2 = beta * r;
         S* __restrict c0 = &H(0, k);
         S* __restrict c1 = &H(0, k + 1);
         S* __restrict c2 = &H(0, k + 2);
-        // The 3×3 diagonal block and row k+3 updated in registers first: the next step's p, q, r
-        // come from them, so the bulge's dependency chain never waits on a store to memory.
-        S a00 = c0[k], a10 = c0[k + 1], a20 = c0[k + 2];
-        S a01 = c1[k], a11 = c1[k + 1], a21 = c1[k + 2];
-        S a02 = c2[k], a12 = c2[k + 1], a22 = c2[k + 2];
-        {
-          S d = a00 + q * a10 + r * a20;
-          a00 -= d * vx, a10 -= d * vy, a20 -= d * vz;
-          d = a01 + q * a11 + r * a21;
-          a01 -= d * vx, a11 -= d * vy, a21 -= d * vz;
-          d = a02 + q * a12 + r * a22;
-          a02 -= d * vx, a12 -= d * vy, a22 -= d * vz;
-          d = vx * a00 + vy * a01 + vz * a02;
-          a00 -= d, a01 -= d * q, a02 -= d * r;
-          d = vx * a10 + vy * a11 + vz * a12;
-          a10 -= d, a11 -= d * q, a12 -= d * r;
-          d = vx * a20 + vy * a21 + vz * a22;
-          a20 -= d, a21 -= d * q, a22 -= d * r;
-        }
+        // The 3×3 diagonal block in registers. Left: column j −= t_j w with t_j = u·(column j).
+        // Right: row i −= s_i wᵀ with s_i = (row i after the left step)·u = A_i − w_i T,
+        // A_i = (row i before)·u and T = Σ_j t_j u_j: the next step's p, q, r (the new entries
+        // (k+1, k), (k+2, k), (k+3, k)) wait on the division and three multiply-adds after it, not
+        // on the left step's results (the same sums, associated differently).
+        const S a00 = c0[k], a10 = c0[k + 1], a20 = c0[k + 2];
+        const S a01 = c1[k], a11 = c1[k + 1], a21 = c1[k + 2];
+        const S a02 = c2[k], a12 = c2[k + 1], a22 = c2[k + 2];
+        const S t0 = u0 * a00 + (q * a10 + r * a20);
+        const S t1 = u0 * a01 + (q * a11 + r * a21);
+        const S t2 = u0 * a02 + (q * a12 + r * a22);
+        const S T = u0 * t0 + (q * t1 + r * t2);
+        const S A0 = u0 * a00 + (q * a01 + r * a02);
+        const S A1 = u0 * a10 + (q * a11 + r * a12);
+        const S A2 = u0 * a20 + (q * a21 + r * a22);
+        const S s0 = A0 - w0 * T, s1 = A1 - w1 * T, s2 = A2 - w2 * T;
+        // (row i, column j) after both: a_ij − t_j w_i − s_i w_j
+        c0[k] = a00 - t0 * w0 - s0 * w0;
+        c1[k] = a01 - t1 * w0 - s0 * w1;
+        c2[k] = a02 - t2 * w0 - s0 * w2;
+        const S b10 = a10 - t0 * w1 - s1 * w0, b20 = a20 - t0 * w2 - s2 * w0;
+        c0[k + 1] = b10;
+        c1[k + 1] = a11 - t1 * w1 - s1 * w1;
+        c2[k + 1] = a12 - t2 * w1 - s1 * w2;
+        c0[k + 2] = b20;
+        c1[k + 2] = a21 - t1 * w2 - s2 * w1;
+        c2[k + 2] = a22 - t2 * w2 - s2 * w2;
         S rn = S(0);
-        if (k + 3 <= hi) {  // H(k+3, k) = H(k+3, k+1) = 0 (zeroed above, untouched since)
-          const S h = c2[k + 3], d = vz * h;
-          c0[k + 3] = -d;
-          c1[k + 3] = -d * q;
-          c2[k + 3] = h - d * r;
-          rn = -d;
+        if (k + 3 <= hi) {  // row k+3: H(k+3, k) = H(k+3, k+1) = 0 (zeroed above, untouched since)
+          const S h = c2[k + 3], s3 = h * r;
+          rn = -s3 * w0;
+          c0[k + 3] = rn;
+          c1[k + 3] = -s3 * w1;
+          c2[k + 3] = h - s3 * w2;
         }
-        c0[k] = a00, c0[k + 1] = a10, c0[k + 2] = a20;
-        c1[k] = a01, c1[k + 1] = a11, c1[k + 2] = a21;
-        c2[k] = a02, c2[k + 1] = a12, c2[k + 2] = a22;
         // Rows k..k+2 from column k+3 to hi, then columns k..k+2 from row lo to k−1 (eigenvalues
         // only: nothing outside the active block).
         int j = k + 3;
@@ -247,29 +276,33 @@ template <class S, int N>
             double* a = &H(k, j);
             double* b = a + N;
             V2 h0 = {a[0], b[0]}, h1 = {a[1], b[1]}, h2 = {a[2], b[2]};
-            const V2 d = h0 + q * h1 + r * h2;
-            h0 -= d * vx;
-            h1 -= d * vy;
-            h2 -= d * vz;
+            const V2 t = u0 * h0 + q * h1 + r * h2;
+            h0 -= t * w0;
+            h1 -= t * w1;
+            h2 -= t * w2;
             a[0] = h0[0], b[0] = h0[1], a[1] = h1[0], b[1] = h1[1], a[2] = h2[0], b[2] = h2[1];
           }
         }
         for (; j <= hi; ++j) {
           S* h = &H(k, j);
-          const S d = h[0] + q * h[1] + r * h[2];
-          h[0] -= d * vx;
-          h[1] -= d * vy;
-          h[2] -= d * vz;
+          const S t = u0 * h[0] + q * h[1] + r * h[2];
+          h[0] -= t * w0;
+          h[1] -= t * w1;
+          h[2] -= t * w2;
         }
         for (int i = lo; i < k; ++i) {
-          const S d = vx * c0[i] + vy * c1[i] + vz * c2[i];
-          c0[i] -= d;
-          c1[i] -= d * q;
-          c2[i] -= d * r;
+          const S t = u0 * c0[i] + q * c1[i] + r * c2[i];
+          c0[i] -= t * w0;
+          c1[i] -= t * w1;
+          c2[i] -= t * w2;
         }
-        p = a10, q = a20, r = rn;
+        p = b10, q = b20, r = rn;
         carried = true;
-      } else {
+      } else {  // the 2-element reflector at the bottom
+        p += sn;
+        const S isn = S(1) / sn, ip = S(1) / p;
+        const S vx = p * isn, vy = q * isn;
+        q *= ip;
         const int iMax = std::min(hi, k + 3);
         for (int j = k; j <= hi; ++j) {
           S* h = &H(k, j);

@@ -5,6 +5,7 @@
 #include "soma/algebra/sin_cos.hpp"
 #include "soma/algebra/small_eigenvalues.hpp"
 #include "soma/algebra/small_linalg.hpp"
+#include "soma/algebra/sub_scaled4.hpp"
 #include "soma/algebra/taylor.hpp"
 #include "soma/geometry/serial/general_6r.hpp"
 #include "soma/algebra/wrap_angle.hpp"
@@ -201,6 +202,8 @@ template <class S> struct Lu12 {
   S rdiag[12];  ///< 1 / U(i, i): solves multiply (divisions are slow)
   int perm[12];
   bool ok = true;
+  S w[12];    ///< during the factorisation: the moduli searched for the next pivot
+  int pNext;  ///< during the factorisation: the next pivot row
   Lu12() = default;
   explicit Lu12(const M12<S>& m) { factor(m); }
   /// Factors m; in double on a CPU with AVX2 and FMA by the AVX2 + FMA build of factorBody.
@@ -215,67 +218,75 @@ template <class S> struct Lu12 {
   SOMA_TARGET_AVX2_FMA void factorAvx2(const M12<S>& m) { factorBody(m); }
 #endif
   [[gnu::always_inline]] inline void factorBody(const M12<S>& m) {
+    begin(m);
+    for (int c = 0; c < 12; ++c) column(c);
+  }
+  /// The pivot row: the first of the largest of v[r], r = c..11, compared in two interleaved
+  /// chains (even and odd rows) joined at the end (one chain of 11 compares was a third of the
+  /// factorisation's critical path).
+  [[gnu::always_inline]] static inline int firstLargest(const S* v, int c) {
+    S b0 = v[c], b1 = S(-1);
+    int i0 = c, i1 = c;
+    int r = c + 1;
+    for (; r + 1 < 12; r += 2) {
+      if (v[r] > b1) b1 = v[r], i1 = r;
+      if (v[r + 1] > b0) b0 = v[r + 1], i0 = r + 1;
+    }
+    if (r < 12 && v[r] > b1) b1 = v[r], i1 = r;
+    return b1 > b0 || (b1 == b0 && i1 < i0) ? i1 : i0;
+  }
+  /// The factorisation in steps (factorTogether runs several in lockstep): the copy and the first
+  /// pivot, then column c's elimination.
+  [[gnu::always_inline]] inline void begin(const M12<S>& m) {
+    using std::abs;
+    ok = true;
+    for (int i = 0; i < 12; ++i) {
+      perm[i] = i;
+      for (int j = 0; j < 12; ++j) a[i][j] = m(i, j);
+    }
+    for (int r = 0; r < 12; ++r) w[r] = abs(a[r][0]);
+    pNext = firstLargest(w, 0);
+  }
+  [[gnu::always_inline]] inline void column(int c) {
     using std::abs;
     // In hardware floating point every row update runs over whole vectors of four columns, from
     // the one that holds the pivot's column (the entries left of the pivot are zeros on both
     // rows): trip counts that vectorise without a remainder, ~2× fewer instructions than the
     // shrinking loop, which software scalars keep.
     constexpr bool fullRows = std::is_same_v<S, double> || std::is_same_v<S, float>;
-    ok = true;
-    for (int i = 0; i < 12; ++i) {
-      perm[i] = i;
-      for (int j = 0; j < 12; ++j) a[i][j] = m(i, j);
-    }
-    // The pivot row: the first of the largest of v[r], r = c..11, compared in two interleaved
-    // chains (even and odd rows) joined at the end (one chain of 11 compares was a third of the
-    // factorisation's critical path).
-    auto firstLargest = [](const S* v, int c) {
-      S b0 = v[c], b1 = S(-1);
-      int i0 = c, i1 = c;
-      int r = c + 1;
-      for (; r + 1 < 12; r += 2) {
-        if (v[r] > b1) b1 = v[r], i1 = r;
-        if (v[r + 1] > b0) b0 = v[r + 1], i0 = r + 1;
-      }
-      if (r < 12 && v[r] > b1) b1 = v[r], i1 = r;
-      return b1 > b0 || (b1 == b0 && i1 < i0) ? i1 : i0;
-    };
-    S w[12];
-    for (int r = 0; r < 12; ++r) w[r] = abs(a[r][0]);
-    int p = firstLargest(w, 0);
-    for (int c = 0; c < 12; ++c) {
-      // p was chosen (below) from the entries of column c times the pivot before them, formed
-      // without 1/pivot: the search overlaps the division and the row updates. The entry it
-      // chose is the largest up to rounding; if it is exactly zero, the entries are searched.
+    if (!ok) return;
+    int p = pNext;
+    // p was chosen (below) from the entries of column c times the pivot before them, formed
+    // without 1/pivot: the search overlaps the division and the row updates. The entry it
+    // chose is the largest up to rounding; if it is exactly zero, the entries are searched.
+    if (a[p][c] == S(0)) {
+      for (int r = c; r < 12; ++r) w[r] = abs(a[r][c]);
+      p = firstLargest(w, c);
       if (a[p][c] == S(0)) {
-        for (int r = c; r < 12; ++r) w[r] = abs(a[r][c]);
-        p = firstLargest(w, c);
-        if (a[p][c] == S(0)) {
-          ok = false;
-          return;
-        }
+        ok = false;
+        return;
       }
-      if (p != c) {
-        for (int j = 0; j < 12; ++j) std::swap(a[p][j], a[c][j]);
-        for (int j = 0; j < c; ++j) std::swap(l[p][j], l[c][j]);
-        std::swap(perm[p], perm[c]);
+    }
+    if (p != c) {
+      for (int j = 0; j < 12; ++j) std::swap(a[p][j], a[c][j]);
+      for (int j = 0; j < c; ++j) std::swap(l[p][j], l[c][j]);
+      std::swap(perm[p], perm[c]);
+    }
+    rdiag[c] = S(1) / a[c][c];
+    if (c + 1 < 12) {  // column c + 1 after this elimination, times the pivot u = a[c][c]
+      const S u = a[c][c], h = a[c][c + 1];
+      for (int r = c + 1; r < 12; ++r) w[r] = abs(S(a[r][c + 1] * u - a[r][c] * h));
+      pNext = firstLargest(w, c + 1);
+    }
+    for (int r = c + 1; r < 12; ++r) {
+      const S f = a[r][c] * rdiag[c];
+      l[r][c] = f;
+      if constexpr (fullRows) {  // from the vector of four that holds column c (zeros before it)
+        for (int j = c & ~3; j < 12; j += 4) detail::subScaled4(&a[r][j], &a[c][j], f);
+      } else {
+        for (int j = c + 1; j < 12; ++j) a[r][j] -= f * a[c][j];
       }
-      rdiag[c] = S(1) / a[c][c];
-      if (c + 1 < 12) {  // column c + 1 after this elimination, times the pivot u = a[c][c]
-        const S u = a[c][c], h = a[c][c + 1];
-        for (int r = c + 1; r < 12; ++r) w[r] = abs(S(a[r][c + 1] * u - a[r][c] * h));
-        p = firstLargest(w, c + 1);
-      }
-      for (int r = c + 1; r < 12; ++r) {
-        const S f = a[r][c] * rdiag[c];
-        l[r][c] = f;
-        if constexpr (fullRows) {  // from the vector of four that holds column c (zeros before it)
-          for (int j = c & ~3; j < 12; ++j) a[r][j] -= f * a[c][j];
-        } else {
-          for (int j = c + 1; j < 12; ++j) a[r][j] -= f * a[c][j];
-        }
-        a[r][c] = S(0);
-      }
+      a[r][c] = S(0);
     }
   }
   /// b ← M⁻ᵀ b (PM = LU: Uᵀ z = b, Lᵀ w = z, b(perm) = w).
@@ -378,6 +389,29 @@ template <class S> struct Lu12 {
     }
   }
 };
+
+/// Factors m[0..n) into lu[0..n) in lockstep, column after column across the matrices: each
+/// factorisation is a chain of 12 dependent pivot steps (search, division, update), and the
+/// independent chains of the back-substitution's matrices (one per real root) overlap in the CPU.
+/// The same operations as Lu12::factor on each. In double on a CPU with AVX2 and FMA by its AVX2 +
+/// FMA build.
+template <class S> [[gnu::always_inline]] inline void factorTogetherBody(Lu12<S>* lu, const M12<S>* m, int n) {
+  for (int i = 0; i < n; ++i) lu[i].begin(m[i]);
+  for (int c = 0; c < 12; ++c)
+    for (int i = 0; i < n; ++i) lu[i].column(c);
+}
+#ifdef SOMA_X86_AVX2_DISPATCH
+template <class S> SOMA_TARGET_AVX2_FMA void factorTogetherAvx2(Lu12<S>* lu, const M12<S>* m, int n) {
+  factorTogetherBody<S>(lu, m, n);
+}
+#endif
+template <class S> void factorTogether(Lu12<S>* lu, const M12<S>* m, int n) {
+#ifdef SOMA_X86_AVX2_DISPATCH
+  if constexpr (std::is_same_v<S, double>)
+    if (detail::cpuHasAvx2Fma()) return factorTogetherAvx2<S>(lu, m, n);
+#endif
+  factorTogetherBody<S>(lu, m, n);
+}
 
 /// Householder QR with column pivoting of a 14×8 matrix, Q·R = M·P: Eigen's ColPivHouseholderQR
 /// (3.4, computeInPlace) step for step — the largest remaining column norm as pivot, the reflector
@@ -544,6 +578,44 @@ template <class S>
     }
     rank = k + 1;
     if (k == 11) break;
+    if constexpr (std::is_same_v<S, double>) {
+      // Four rows at a time from the vector of four that holds row k + 1 (the rows above it have
+      // multipliers zero: left as they are, and out of the search); per lane the first largest,
+      // then the first largest of the four lanes: the same pivot as row after row.
+      typedef double V4 __attribute__((vector_size(32), aligned(8), may_alias));
+      typedef long long I4 __attribute__((vector_size(32)));
+      const int c0 = (k + 1) >> 2;
+      const I4 lane = {0, 1, 2, 3};
+      for (int j = k + 1; j < 12; ++j) {
+        const double ur = zr(k, j), ui = zi(k, j);
+        V4 bestV = {-1.0, -1.0, -1.0, -1.0};
+        I4 argV = {k + 1, k + 1, k + 1, k + 1};
+        for (int c = c0; c < 3; ++c) {
+          V4& xr = *reinterpret_cast<V4*>(&zr(4 * c, j));
+          V4& xi = *reinterpret_cast<V4*>(&zi(4 * c, j));
+          const V4 vr = *reinterpret_cast<const V4*>(&fr[4 * c]);
+          const V4 vi = *reinterpret_cast<const V4*>(&fi[4 * c]);
+          const V4 r = xr - (vr * ur - vi * ui), t = xi - (vr * ui + vi * ur);
+          xr = r;
+          xi = t;
+          V4 m2 = r * r + t * t;
+          const I4 row = lane + 4 * c;
+          const V4 none = {-1.0, -1.0, -1.0, -1.0};
+          if (c == c0) m2 = row > k ? m2 : none;
+          const I4 g = m2 > bestV;
+          bestV = g ? m2 : bestV;
+          argV = g ? row : argV;
+        }
+        double m = bestV[0];
+        int a = int(argV[0]);
+        for (int l = 1; l < 4; ++l)
+          if (bestV[l] > m || (bestV[l] == m && int(argV[l]) < a)) m = bestV[l], a = int(argV[l]);
+        colMax[j] = m;
+        colArg[j] = a;
+      }
+      best = pivotOf(k + 1, p, q);
+      continue;
+    }
     for (int j = k + 1; j < 12; ++j) {
       const S ur = zr(k, j), ui = zi(k, j);
       S m = S(-1);
@@ -608,7 +680,22 @@ template <class S>
     for (int j = 0; j < 8; ++j) {
       if (usedCol[j]) continue;
       S m = S(0);
-      for (int i = 0; i < 24; ++i) m = std::max<S>(m, abs(W(i, j)));
+      if constexpr (std::is_same_v<S, double>) {
+        // six vectors of four, maxima in a tree (a running max is one chain of 24 dependent
+        // compares: the compiler may not reorder it), then across the lanes; the same maximum
+        typedef double V4 __attribute__((vector_size(32), aligned(8), may_alias));
+        V4 v[6];
+        for (int b = 0; b < 6; ++b) {
+          const V4 x = *reinterpret_cast<const V4*>(&W(4 * b, j)), y = -x;
+          v[b] = x > y ? x : y;
+        }
+        for (int b = 0; b < 3; ++b) v[b] = v[b + 3] > v[b] ? v[b + 3] : v[b];
+        v[0] = v[1] > v[0] ? v[1] : v[0];
+        v[0] = v[2] > v[0] ? v[2] : v[0];
+        for (int l = 0; l < 4; ++l) m = std::max<S>(m, v[0][l]);
+      } else {
+        for (int i = 0; i < 24; ++i) m = std::max<S>(m, abs(W(i, j)));
+      }
       if (m > bestW) bestW = m, c = j;
     }
     if (c < 0) return false;
@@ -832,6 +919,9 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
   // after column, each column's 8 applications are one chain of dependent sums).
   for (int k = 7; k >= 0; --k)
     for (int j = 0; j < 6; ++j) reflect(k, &Q6(0, j));
+  // 1 / R(i, i) for the back-substitutions of every real root (no division on their chains)
+  std::array<S, 8> rInv{};
+  for (int i = 0; i < qr.nonzero; ++i) rInv[i] = S(1) / qrm(i, i);
   const Eigen::Matrix<S, 6, 14> N = Q6.transpose();
   std::array<M6x9<S>, 3> Sig;
   for (int k = 0; k < 3; ++k) Sig[k].noalias() = N.lazyProduct(P[k]);
@@ -1057,90 +1147,113 @@ Core<S> eigenCore(const Loop6R<S>& K, bool probe = false) {
   // Back-substitution for each real x3.
   out.phi.reserve(reals.size());
   out.x3.reserve(reals.size());
-  for (const S& x : reals) {
-    const M12<S> M = (A * x + B) * x + C;
-    const Lu12<S> lu(M);
-    Eigen::Matrix<S, 12, 1> v = Eigen::Matrix<S, 12, 1>::Ones();
-    for (int it = 0; it < 2 && lu.ok; ++it) {
-      lu.solve(v);
-      const S n2 = v.squaredNorm();
-      if (!(n2 > S(0)) || !isFinite(n2)) break;
-      v /= sqrt(n2);
+  // The kernel of M(x) by two steps of inverse iteration from (1, …, 1), for up to four roots
+  // together (their factorisations in lockstep, their solves one after the other: independent
+  // chains that overlap).
+  constexpr int kBatch = 4;
+  std::array<M12<S>, kBatch> Mb;
+  std::array<Lu12<S>, kBatch> lub;
+  std::array<Eigen::Matrix<S, 12, 1>, kBatch> vb;
+  for (std::size_t b0 = 0; b0 < reals.size(); b0 += kBatch) {
+    const int nb = int(std::min<std::size_t>(kBatch, reals.size() - b0));
+    for (int i = 0; i < nb; ++i) Mb[i] = (A * reals[b0 + i] + B) * reals[b0 + i] + C;
+    factorTogether<S>(lub.data(), Mb.data(), nb);
+    std::array<bool, kBatch> going{};
+    for (int i = 0; i < nb; ++i) {
+      vb[i].setOnes();
+      going[i] = lub[i].ok;
     }
-    if (!lu.ok || !allFinite(v)) {  // an exact zero pivot: the kernel from a full-pivot LU
-      Eigen::FullPivLU<MX<S>> flu{MX<S>(M)};
-      flu.setThreshold(Tolerance<S>::sqrtEpsilon());
-      const auto ker = flu.kernel();
-      if (ker.cols() < 1) continue;
-      v = ker.col(0);
-    }
-    S n4 = S(0), d4 = S(0), n5 = S(0), d5 = S(0);
-    for (int j = 0; j < 4; ++j)
-      for (int k = 0; k < 3; ++k) {
-        const S vj = v(j * 3 + k);
-        if (j < 3) {
-          n4 += v((j + 1) * 3 + k) * vj;
-          d4 += vj * vj;
+    for (int it = 0; it < 2; ++it)
+      for (int i = 0; i < nb; ++i) {
+        if (!going[i]) continue;
+        lub[i].solve(vb[i]);
+        const S n2 = vb[i].squaredNorm();
+        if (!(n2 > S(0)) || !isFinite(n2)) {
+          going[i] = false;
+          continue;
         }
-        if (k < 2) {
-          n5 += v(j * 3 + k + 1) * vj;
-          d5 += vj * vj;
+        vb[i] /= sqrt(n2);
+      }
+    for (int ib = 0; ib < nb; ++ib) {
+      const S& x = reals[b0 + ib];
+      const M12<S>& M = Mb[ib];
+      const Lu12<S>& lu = lub[ib];
+      Eigen::Matrix<S, 12, 1>& v = vb[ib];
+      if (!lu.ok || !allFinite(v)) {  // an exact zero pivot: the kernel from a full-pivot LU
+        Eigen::FullPivLU<MX<S>> flu{MX<S>(M)};
+        flu.setThreshold(Tolerance<S>::sqrtEpsilon());
+        const auto ker = flu.kernel();
+        if (ker.cols() < 1) continue;
+        v = ker.col(0);
+      }
+      S n4 = S(0), d4 = S(0), n5 = S(0), d5 = S(0);
+      for (int j = 0; j < 4; ++j)
+        for (int k = 0; k < 3; ++k) {
+          const S vj = v(j * 3 + k);
+          if (j < 3) {
+            n4 += v((j + 1) * 3 + k) * vj;
+            d4 += vj * vj;
+          }
+          if (k < 2) {
+            n5 += v(j * 3 + k + 1) * vj;
+            d5 += vj * vj;
+          }
         }
+      // Angles by atan and atan2; their cosines and sines from the same ratios (no sin/cos call).
+      Posture6<S> phi;
+      phi.q[2] = beta + S(2) * atan(x);
+      phi.q[3] = halfAngleFromPairs(n4, d4);
+      phi.q[4] = halfAngleFromPairs(n5, d5);
+      S c3, s3, t4[3] = {S(1), S(0), S(0)}, t5[3] = {S(1), S(0), S(0)};
+      {
+        S ca, sa;  // of 2·atan(x) = 2·atan2(x, 1) = 2·atan2(1, 1/x) ± 2π
+        if (abs(x) <= S(1)) doubleAngleOf(x, S(1), ca, sa);
+        else doubleAngleOf(S(1), S(S(1) / x), ca, sa);
+        c3 = cBeta * ca - sBeta * sa;
+        s3 = sBeta * ca + cBeta * sa;
       }
-    // Angles by atan and atan2; their cosines and sines from the same ratios (no sin/cos call).
-    Posture6<S> phi;
-    phi.q[2] = beta + S(2) * atan(x);
-    phi.q[3] = halfAngleFromPairs(n4, d4);
-    phi.q[4] = halfAngleFromPairs(n5, d5);
-    S c3, s3, t4[3] = {S(1), S(0), S(0)}, t5[3] = {S(1), S(0), S(0)};
-    {
-      S ca, sa;  // of 2·atan(x) = 2·atan2(x, 1) = 2·atan2(1, 1/x) ± 2π
-      if (abs(x) <= S(1)) doubleAngleOf(x, S(1), ca, sa);
-      else doubleAngleOf(S(1), S(S(1) / x), ca, sa);
-      c3 = cBeta * ca - sBeta * sa;
-      s3 = sBeta * ca + cBeta * sa;
-    }
-    doubleAngleOf(n4, d4, t4[1], t4[2]);
-    doubleAngleOf(n5, d5, t5[1], t5[2]);
-    Eigen::Matrix<S, 9, 1> m45;
-    for (int i4 = 0; i4 < 3; ++i4)
-      for (int i5 = 0; i5 < 3; ++i5) m45(i4 * 3 + i5) = t4[i4] * t5[i5];
-    const V14<S> rhs = (P[0] + P[1] * c3 + P[2] * s3) * m45;
-    // u = qr.solve(rhs) (Eigen's ColPivHouseholderQR::solve, by hand: Qᵀ rhs with the first
-    // nonzeroPivots reflectors, R⁻¹ on those rows, the column permutation; the rest zero).
-    Eigen::Matrix<S, 8, 1> u = Eigen::Matrix<S, 8, 1>::Zero();
-    {
-      V14<S> c = rhs;
-      const int nz = qr.nonzero;
-      for (int k = 0; k < nz; ++k) reflect(k, c.data());
-      for (int i = nz - 1; i >= 0; --i) {
-        S v = c(i);
-        for (int k = i + 1; k < nz; ++k) v -= qrm(i, k) * c(k);
-        c(i) = v / qrm(i, i);
+      doubleAngleOf(n4, d4, t4[1], t4[2]);
+      doubleAngleOf(n5, d5, t5[1], t5[2]);
+      Eigen::Matrix<S, 9, 1> m45;
+      for (int i4 = 0; i4 < 3; ++i4)
+        for (int i5 = 0; i5 < 3; ++i5) m45(i4 * 3 + i5) = t4[i4] * t5[i5];
+      const V14<S> rhs = (P[0] + P[1] * c3 + P[2] * s3) * m45;
+      // u = qr.solve(rhs) (Eigen's ColPivHouseholderQR::solve, by hand: Qᵀ rhs with the first
+      // nonzeroPivots reflectors, R⁻¹ on those rows, the column permutation; the rest zero).
+      Eigen::Matrix<S, 8, 1> u = Eigen::Matrix<S, 8, 1>::Zero();
+      {
+        V14<S> c = rhs;
+        const int nz = qr.nonzero;
+        for (int k = 0; k < nz; ++k) reflect(k, c.data());
+        for (int i = nz - 1; i >= 0; --i) {
+          S v = c(i);
+          for (int k = i + 1; k < nz; ++k) v -= qrm(i, k) * c(k);
+          c(i) = v * rInv[i];
+        }
+        for (int i = 0; i < nz; ++i) u(qr.perm[i]) = c(i);
       }
-      for (int i = 0; i < nz; ++i) u(qr.perm[i]) = c(i);
+      // u = (c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2)
+      phi.q[0] = atan2(u(5), u(2));
+      phi.q[1] = atan2(u(1), u(0));
+      unitAngleOf(u(5), u(2), phi.c[0], phi.s[0]);
+      unitAngleOf(u(1), u(0), phi.c[1], phi.s[1]);
+      phi.c[2] = c3, phi.s[2] = s3;
+      phi.c[3] = t4[1], phi.s[3] = t4[2];
+      phi.c[4] = t5[1], phi.s[4] = t5[2];
+      // θ6 from the loop: Rz(θ6) = (Rz(θ1)K1···Rz(θ5)K5)ᵀ-rotation · K6ᵀ-rotation.
+      Mat3<S> R = Mat3<S>::Identity();
+      for (int i = 0; i < 5; ++i) {
+        const S c = phi.c[i], s = phi.s[i];
+        Mat3<S> Z;
+        Z << c, -s, S(0), s, c, S(0), S(0), S(0), S(1);
+        R = (R * Z * K.R[i]).eval();
+      }
+      const Mat3<S> R6 = R.transpose() * K.R[5].transpose();
+      phi.q[5] = atan2(R6(1, 0), R6(0, 0));
+      unitAngleOf(R6(1, 0), R6(0, 0), phi.c[5], phi.s[5]);
+      out.phi.push_back(phi);
+      out.x3.push_back(x);
     }
-    // u = (c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2)
-    phi.q[0] = atan2(u(5), u(2));
-    phi.q[1] = atan2(u(1), u(0));
-    unitAngleOf(u(5), u(2), phi.c[0], phi.s[0]);
-    unitAngleOf(u(1), u(0), phi.c[1], phi.s[1]);
-    phi.c[2] = c3, phi.s[2] = s3;
-    phi.c[3] = t4[1], phi.s[3] = t4[2];
-    phi.c[4] = t5[1], phi.s[4] = t5[2];
-    // θ6 from the loop: Rz(θ6) = (Rz(θ1)K1···Rz(θ5)K5)ᵀ-rotation · K6ᵀ-rotation.
-    Mat3<S> R = Mat3<S>::Identity();
-    for (int i = 0; i < 5; ++i) {
-      const S c = phi.c[i], s = phi.s[i];
-      Mat3<S> Z;
-      Z << c, -s, S(0), s, c, S(0), S(0), S(0), S(1);
-      R = (R * Z * K.R[i]).eval();
-    }
-    const Mat3<S> R6 = R.transpose() * K.R[5].transpose();
-    phi.q[5] = atan2(R6(1, 0), R6(0, 0));
-    unitAngleOf(R6(1, 0), R6(0, 0), phi.c[5], phi.s[5]);
-    out.phi.push_back(phi);
-    out.x3.push_back(x);
   }
   return out;
 }

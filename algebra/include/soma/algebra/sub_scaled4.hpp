@@ -1,0 +1,21 @@
+#pragma once
+// x[0..4) −= f·y[0..4) as one vector of four in double (GNU vector extension; two SSE2 halves in a
+// build without AVX): the row updates of the small dense kernels (ELMHES, the general 6R's 12×12
+// LU) run over whole vectors of four, but their loops have a runtime length of 4 to 12, which the
+// compiler leaves scalar (its vector loop wants 16). Other scalars: the plain loop.
+#include <type_traits>
+
+namespace soma::detail {
+
+template <class S> [[gnu::always_inline]] inline void subScaled4(S* __restrict x, const S* __restrict y, const S& f) {
+#if defined(__clang__) || defined(__GNUC__)
+  if constexpr (std::is_same_v<S, double>) {
+    typedef double V4 __attribute__((vector_size(32), aligned(8), may_alias));
+    *reinterpret_cast<V4*>(x) -= f * *reinterpret_cast<const V4*>(y);
+    return;
+  }
+#endif
+  for (int t = 0; t < 4; ++t) x[t] -= f * y[t];
+}
+
+}  // namespace soma::detail
