@@ -92,31 +92,28 @@ template <class S, std::size_t N> void gridToTrig(std::array<V14<S>, N>& F, int 
   }
 }
 
-/// Coefficients of the half-angle substitution: (1, cos, sin)·(1 + x²) = rows of powers 1, x, x².
-template <class S> S halfAngle(int trig, int power) {
-  static const int t[3][3] = {{1, 0, 1}, {1, 0, -1}, {0, 2, 0}};
-  return S(t[trig][power]);
-}
-
 /// 6×9 trigonometric rows in (θ4, θ5) → the 12×12 polynomial block: rows r and 6 + r hold the
 /// row polynomial in x4^j x5^k and x4 times it (column j*3 + k, j ≤ 3, k ≤ 2).
+/// The half-angle substitution (1, cos, sin)·(1 + x²) = (1 + x², 1 − x², 2x) in θ5, then in θ4:
+/// coefficients (a, b, c) of (1, cos, sin) → (a + b, 2c, a − b) of (1, x, x²).
 template <class S> M12<S> toPolynomialBlock(const M6x9<S>& X) {
   M12<S> M = M12<S>::Zero();
-  for (int r = 0; r < 6; ++r)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k) {
-        S y = S(0);
-        for (int i4 = 0; i4 < 3; ++i4) {
-          const S h4 = halfAngle<S>(i4, j);
-          if (h4 == S(0)) continue;
-          for (int i5 = 0; i5 < 3; ++i5) {
-            const S h5 = halfAngle<S>(i5, k);
-            if (h5 != S(0)) y += h4 * h5 * X(r, i4 * 3 + i5);
-          }
-        }
-        M(r, j * 3 + k) = y;
-        M(6 + r, (j + 1) * 3 + k) = y;
+  for (int r = 0; r < 6; ++r) {
+    S z[3][3];  // z[i4][k]: θ5 substituted
+    for (int i4 = 0; i4 < 3; ++i4) {
+      const S a = X(r, i4 * 3), b = X(r, i4 * 3 + 1), c = X(r, i4 * 3 + 2);
+      z[i4][0] = a + b;
+      z[i4][1] = S(2) * c;
+      z[i4][2] = a - b;
+    }
+    for (int k = 0; k < 3; ++k) {
+      const S y[3] = {z[0][k] + z[1][k], S(2) * z[2][k], z[0][k] - z[1][k]};
+      for (int j = 0; j < 3; ++j) {
+        M(r, j * 3 + k) = y[j];
+        M(6 + r, (j + 1) * 3 + k) = y[j];
       }
+    }
+  }
   return M;
 }
 
