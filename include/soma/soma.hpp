@@ -41,6 +41,7 @@
 #include <soma/algebra/small_linalg.hpp>
 #include <soma/algebra/so3.hpp>
 #include <soma/algebra/study_parameters.hpp>
+#include <soma/algebra/sub_scaled4.hpp>
 #include <soma/algebra/taylor.hpp>
 #include <soma/algebra/tolerance.hpp>
 #include <soma/algebra/wrap_angle.hpp>

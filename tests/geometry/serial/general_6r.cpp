@@ -94,6 +94,38 @@ TEMPLATE_TEST_CASE("general 6R: five scalars on random cases", "[sixr][scalars]"
   }
 }
 
+TEST_CASE("general 6R: float near a double root, escalated, answers as double does", "[sixr][scalars]") {
+  // Pose 103 of SOMA-6R-speed-accuracy's pool (seed 20261130, drawn as the study draws it): in
+  // float two real roots lie 5.5e-4 apart, the answer is suspect and re-solved in double, and the
+  // answer is the union of float's postures and double's (polished in float). Float's own
+  // candidates there can stop short of converging between the two roots: with the 12×12 blocks
+  // rounded differently (the substitution summed in another order) two of them polished to 1.4e-4
+  // only, 0.01-0.02 rad from double's postures, and were listed beside them: 6 postures for 4.
+  std::mt19937_64 g(20261130);
+  std::uniform_real_distribution<double> u(-1, 1);
+  Robot6R<double> rb;
+  std::array<double, 6> q{};
+  for (int k = 0; k <= 103; ++k) {
+    for (auto& r : rb) {
+      r.a = u(g);
+      r.alpha = 3.1 * u(g);
+      r.d = u(g);
+      r.theta = 0.5 * u(g);
+    }
+    for (auto& x : q) x = 3.1 * u(g);
+  }
+  const SE3<double> T = general6rForward(rb, q);
+  Robot6R<float> rf;
+  for (int i = 0; i < 6; ++i) rf[i] = rb[i].cast<float>();
+  const auto d = solveGeneral6R(rb, T);
+  const auto f = solveGeneral6R(rf, T.cast<float>());
+  for (const auto& n : f.notes) INFO(n);
+  CHECK(f.solved_in == "double");  // (else this pose no longer tests the escalation)
+  CHECK(d.count() == 4);
+  CHECK(f.count() == d.count());
+  for (std::size_t k = 0; k < f.count(); ++k) CHECK(f.residuals[k] <= 64 * Tolerance<float>::epsilon());
+}
+
 TEST_CASE("general 6R: counts agree with an independent real-root count", "[sixr]") {
   // Every posture found by one pose is found again from each of its postures' poses (the pose is
   // the same: the sets must coincide).

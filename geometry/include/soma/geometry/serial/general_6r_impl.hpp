@@ -92,28 +92,31 @@ template <class S, std::size_t N> void gridToTrig(std::array<V14<S>, N>& F, int 
   }
 }
 
+/// Coefficients of the half-angle substitution: (1, cos, sin)·(1 + x²) = rows of powers 1, x, x².
+template <class S> S halfAngle(int trig, int power) {
+  static const int t[3][3] = {{1, 0, 1}, {1, 0, -1}, {0, 2, 0}};
+  return S(t[trig][power]);
+}
+
 /// 6×9 trigonometric rows in (θ4, θ5) → the 12×12 polynomial block: rows r and 6 + r hold the
 /// row polynomial in x4^j x5^k and x4 times it (column j*3 + k, j ≤ 3, k ≤ 2).
-/// The half-angle substitution (1, cos, sin)·(1 + x²) = (1 + x², 1 − x², 2x) in θ5, then in θ4:
-/// coefficients (a, b, c) of (1, cos, sin) → (a + b, 2c, a − b) of (1, x, x²).
 template <class S> M12<S> toPolynomialBlock(const M6x9<S>& X) {
   M12<S> M = M12<S>::Zero();
-  for (int r = 0; r < 6; ++r) {
-    S z[3][3];  // z[i4][k]: θ5 substituted
-    for (int i4 = 0; i4 < 3; ++i4) {
-      const S a = X(r, i4 * 3), b = X(r, i4 * 3 + 1), c = X(r, i4 * 3 + 2);
-      z[i4][0] = a + b;
-      z[i4][1] = S(2) * c;
-      z[i4][2] = a - b;
-    }
-    for (int k = 0; k < 3; ++k) {
-      const S y[3] = {z[0][k] + z[1][k], S(2) * z[2][k], z[0][k] - z[1][k]};
-      for (int j = 0; j < 3; ++j) {
-        M(r, j * 3 + k) = y[j];
-        M(6 + r, (j + 1) * 3 + k) = y[j];
+  for (int r = 0; r < 6; ++r)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) {
+        S y = S(0);
+        for (int i4 = 0; i4 < 3; ++i4) {
+          const S h4 = halfAngle<S>(i4, j);
+          if (h4 == S(0)) continue;
+          for (int i5 = 0; i5 < 3; ++i5) {
+            const S h5 = halfAngle<S>(i5, k);
+            if (h5 != S(0)) y += h4 * h5 * X(r, i4 * 3 + i5);
+          }
+        }
+        M(r, j * 3 + k) = y;
+        M(6 + r, (j + 1) * 3 + k) = y;
       }
-    }
-  }
   return M;
 }
 
@@ -359,17 +362,25 @@ template <class S> struct Lu12 {
     solveColumnsBody<K>(X);
   }
 #endif
+  // Plain loops over the K columns, not Eigen's row expressions: those are built for the TU's
+  // instruction set (SSE2), these are vectorised for the function's (AVX2 + FMA in solveColumnsAvx2).
   template <int K> [[gnu::always_inline]] inline void solveColumnsBody(Eigen::Matrix<S, 12, K>& X) const {
-    Eigen::Matrix<S, 12, K, Eigen::RowMajor> y;
+    S y[12][K];
     for (int i = 0; i < 12; ++i) {
-      y.row(i) = X.row(perm[i]);
-      for (int k = 0; k < i; ++k) y.row(i) -= l[i][k] * y.row(k);
+      for (int c = 0; c < K; ++c) y[i][c] = X(perm[i], c);
+      for (int k = 0; k < i; ++k) {
+        const S f = l[i][k];
+        for (int c = 0; c < K; ++c) y[i][c] -= f * y[k][c];
+      }
     }
     for (int i = 11; i >= 0; --i) {
-      for (int k = i + 1; k < 12; ++k) y.row(i) -= a[i][k] * y.row(k);
-      y.row(i) *= rdiag[i];
+      for (int k = i + 1; k < 12; ++k) {
+        const S f = a[i][k];
+        for (int c = 0; c < K; ++c) y[i][c] -= f * y[k][c];
+      }
+      const S r = rdiag[i];
+      for (int c = 0; c < K; ++c) X(i, c) = y[i][c] *= r;
     }
-    X = y;
   }
   /// b ← M⁻¹ b (forward substitution with the unit lower factor, then back substitution).
   void solve(Eigen::Matrix<S, 12, 1>& b) const {
