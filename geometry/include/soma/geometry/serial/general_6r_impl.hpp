@@ -590,7 +590,7 @@ template <class S>
       // Four rows at a time from the vector of four that holds row k + 1 (the rows above it have
       // multipliers zero: left as they are, and out of the search); per lane the first largest,
       // then the first largest of the four lanes: the same pivot as row after row.
-      typedef double V4 __attribute__((vector_size(32), aligned(8), may_alias));
+      using V4 = detail::Double4;
       typedef long long I4 __attribute__((vector_size(32)));
       const int c0 = (k + 1) >> 2;
       const I4 lane = {0, 1, 2, 3};
@@ -691,7 +691,7 @@ template <class S>
       if constexpr (std::is_same_v<S, double>) {
         // six vectors of four, maxima in a tree (a running max is one chain of 24 dependent
         // compares: the compiler may not reorder it), then across the lanes; the same maximum
-        typedef double V4 __attribute__((vector_size(32), aligned(8), may_alias));
+        using V4 = detail::Double4;
         V4 v[6];
         for (int b = 0; b < 6; ++b) {
           const V4 x = *reinterpret_cast<const V4*>(&W(4 * b, j)), y = -x;
